@@ -1,0 +1,49 @@
+#ifndef ssc_mechanics_elasticity_parameters_h
+#define ssc_mechanics_elasticity_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  /// Volume discretisation: pure displacement, or displacement with the
+  /// volumetric strain projected onto discontinuous P_{p-1} per cell
+  /// (B-bar; the statically condensed Q_p-P_{p-1}^disc mixed method).
+  enum class Formulation
+  {
+    displacement,
+    mixed
+  };
+
+  /// How the lateral sides of the patch are held.
+  enum class SideCondition
+  {
+    free,
+    roller,
+    fixed
+  };
+
+  /**
+   * Discretisation, boundary conditions and linear solver of the volume
+   * elasticity problem.
+   */
+  struct ElasticityParameters
+  {
+    unsigned int  degree        = 1;
+    Formulation   formulation   = Formulation::displacement;
+    SideCondition sides         = SideCondition::roller;
+    double        tolerance     = 1e-8;
+    unsigned int  max_iterations = 1000;
+    bool          rigid_body_modes = true;
+    double        aggregation_threshold = 1e-4;
+    unsigned int  smoother_sweeps = 2;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+} // namespace ssc
+
+#endif

@@ -1,0 +1,172 @@
+#ifndef ssc_mechanics_volume_elasticity_h
+#define ssc_mechanics_volume_elasticity_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ssc/background_mesh.h>
+#include <ssc/layer_stack.h>
+#include <ssc/mechanics/elasticity_parameters.h>
+
+class Epetra_MultiVector;
+
+namespace ssc
+{
+  /**
+   * A prescribed displacement on (part of) a boundary: the components in
+   * @p components take the values of @p values at the support points of
+   * boundary @p boundary_id that satisfy @p region (all, if empty).
+   */
+  struct DirichletCondition
+  {
+    types::boundary_id                     boundary_id;
+    ComponentMask                          components;
+    std::shared_ptr<const Function<3>>     values;
+    std::function<bool(const Point<3> &)>  region;
+  };
+
+  /// What one linear solve did.
+  struct LinearSolveReport
+  {
+    unsigned int iterations     = 0;
+    double       final_residual = 0;
+  };
+
+  /**
+   * Small-strain elasticity of the layered volume on the background mesh:
+   * FE_Q(p)^3, per-layer isotropic material (material_id = layer index),
+   * standard or mixed (B-bar) volumetric part, Trilinos CG with ML AMG fed
+   * with the rigid-body modes. One cell assembly routine serves the matrix,
+   * the right-hand side and the residual from which reactions are computed.
+   */
+  class VolumeElasticity
+  {
+  public:
+    VolumeElasticity(BackgroundMesh &            mesh,
+                     const LayerStack &          layers,
+                     const ElasticityParameters &parameters,
+                     TimerOutput &               timer,
+                     ConditionalOStream &        pcout);
+    ~VolumeElasticity();
+
+    /// Distributes the degrees of freedom.
+    void
+    setup_dofs();
+
+    /// Hanging-node and Dirichlet constraints, sparsity and matrix layout.
+    void
+    setup_system(const std::vector<DirichletCondition> &conditions);
+
+    /// Assembles matrix and right-hand side; @p body_force in N/mm^3.
+    void
+    assemble(const Function<3> *body_force = nullptr);
+
+    /// Solves with CG + AMG, distributes constraints.
+    LinearSolveReport
+    solve();
+
+    /**
+     * Reaction force (N) on the dofs held by condition @p condition_index:
+     * the residual K u - f of the unconstrained cell contributions, summed
+     * with weights of a unit field on those dofs (virtual work; consistent
+     * with hanging nodes). This is the force the body exerts against the
+     * boundary condition; the force applied by it is its negative.
+     */
+    Tensor<1, 3>
+    reaction(const unsigned int condition_index,
+             const Function<3> *body_force = nullptr) const;
+
+    /// L2 norm and H1 seminorm of u - exact.
+    std::pair<double, double>
+    compute_errors(const Function<3> &exact_solution) const;
+
+    /// Writes displacement, cell stress, von Mises and layer id as
+    /// VTU (+ PVTU record); returns the name of the master file.
+    std::string
+    write_vtu(const std::string &directory,
+              const std::string &basename,
+              const unsigned int step) const;
+
+    /// Displacement at point @p p (on whichever rank owns it, then
+    /// broadcast); throws if no rank finds it.
+    Tensor<1, 3>
+    point_value(const Point<3> &p) const;
+
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    const DoFHandler<3> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    const TrilinosWrappers::MPI::Vector &
+    solution() const
+    {
+      return locally_relevant_solution;
+    }
+
+  private:
+    /// The one cell assembly of this physics (matrix and load vector).
+    void
+    assemble_cell(const typename DoFHandler<3>::active_cell_iterator &cell,
+                  FEValues<3> &                                       fe_values,
+                  const Function<3> *body_force,
+                  FullMatrix<double> &cell_matrix,
+                  Vector<double> &    cell_rhs) const;
+
+    void
+    setup_preconditioner();
+
+    BackgroundMesh &            mesh;
+    const LayerStack &          layers;
+    const ElasticityParameters &parameters;
+    TimerOutput &               timer;
+    ConditionalOStream &        pcout;
+    MPI_Comm                    mpi_communicator;
+
+    FESystem<3>   fe;
+    MappingQ<3>   mapping;
+    DoFHandler<3> dof_handler;
+    IndexSet      locally_owned_dofs;
+    IndexSet      locally_relevant_dofs;
+
+    AffineConstraints<double> hanging_node_constraints;
+    AffineConstraints<double> constraints;
+    std::vector<IndexSet>     constrained_dofs_per_condition;
+
+    TrilinosWrappers::SparseMatrix     system_matrix;
+    TrilinosWrappers::MPI::Vector      system_rhs;
+    TrilinosWrappers::MPI::Vector      locally_relevant_solution;
+    TrilinosWrappers::PreconditionAMG  preconditioner;
+    std::unique_ptr<Epetra_MultiVector> near_null_space;
+  };
+} // namespace ssc
+
+#endif

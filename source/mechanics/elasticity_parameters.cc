@@ -1,0 +1,79 @@
+#include <ssc/mechanics/elasticity_parameters.h>
+
+namespace ssc
+{
+  void
+  ElasticityParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Elasticity");
+    prm.declare_entry("Degree",
+                      "1",
+                      Patterns::Integer(1, 2),
+                      "Polynomial degree p of the FE_Q^3 displacement (1 or "
+                      "2).");
+    prm.declare_entry(
+      "Formulation",
+      "displacement",
+      Patterns::Selection("displacement|mixed"),
+      "displacement: standard Galerkin (locks for nu -> 0.5 with Q1). mixed: "
+      "the volumetric strain is L2-projected onto discontinuous P_{p-1} "
+      "polynomials on each cell (B-bar; equivalent to the Q_p-P_{p-1}^disc "
+      "displacement-pressure method with the pressure condensed out), "
+      "free of locking for nearly incompressible tissue.");
+    prm.declare_entry("Sides",
+                      "roller",
+                      Patterns::Selection("free|roller|fixed"),
+                      "Condition on the four lateral sides of the patch: "
+                      "free (traction free), roller (zero normal "
+                      "displacement) or fixed (zero displacement). The "
+                      "bottom is always fixed.");
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Tolerance",
+                      "1e-8",
+                      Patterns::Double(1e-16, 1),
+                      "CG stops when the residual has dropped by this factor "
+                      "relative to the right-hand side.");
+    prm.declare_entry("Max iterations",
+                      "1000",
+                      Patterns::Integer(1),
+                      "CG iteration limit; reaching it is an error.");
+    prm.declare_entry("Rigid body modes",
+                      "true",
+                      Patterns::Bool(),
+                      "Give the AMG preconditioner the six rigid-body modes "
+                      "as near-null space (true) or only the three "
+                      "translations (false, for comparison).");
+    prm.declare_entry("Aggregation threshold",
+                      "1e-4",
+                      Patterns::Double(0, 1),
+                      "ML smoothed-aggregation drop tolerance.");
+    prm.declare_entry("Smoother sweeps",
+                      "2",
+                      Patterns::Integer(1, 10),
+                      "Chebyshev smoother sweeps per AMG level.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+
+  void
+  ElasticityParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Elasticity");
+    degree      = prm.get_integer("Degree");
+    formulation = prm.get("Formulation") == "mixed" ? Formulation::mixed :
+                                                      Formulation::displacement;
+    const std::string s = prm.get("Sides");
+    sides = s == "free"   ? SideCondition::free :
+            s == "fixed"  ? SideCondition::fixed :
+                            SideCondition::roller;
+    prm.enter_subsection("Linear solver");
+    tolerance             = prm.get_double("Tolerance");
+    max_iterations        = prm.get_integer("Max iterations");
+    rigid_body_modes      = prm.get_bool("Rigid body modes");
+    aggregation_threshold = prm.get_double("Aggregation threshold");
+    smoother_sweeps       = prm.get_integer("Smoother sweeps");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+} // namespace ssc

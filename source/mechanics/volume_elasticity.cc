@@ -1,0 +1,551 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <ssc/mechanics/linear_elastic_material.h>
+#include <ssc/mechanics/volume_elasticity.h>
+
+namespace ssc
+{
+  VolumeElasticity::VolumeElasticity(BackgroundMesh &            mesh,
+                                     const LayerStack &          layers,
+                                     const ElasticityParameters &parameters,
+                                     TimerOutput &               timer,
+                                     ConditionalOStream &        pcout)
+    : mesh(mesh)
+    , layers(layers)
+    , parameters(parameters)
+    , timer(timer)
+    , pcout(pcout)
+    , mpi_communicator(mesh.triangulation().get_communicator())
+    , fe(FE_Q<3>(parameters.degree), 3)
+    , mapping(1)
+    , dof_handler(mesh.triangulation())
+  {}
+
+
+  VolumeElasticity::~VolumeElasticity()
+  {
+    // The preconditioner references the near-null space: release it first.
+    preconditioner.clear();
+    near_null_space.reset();
+  }
+
+
+  void
+  VolumeElasticity::setup_dofs()
+  {
+    dof_handler.distribute_dofs(fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    locally_relevant_solution.reinit(locally_owned_dofs,
+                                     locally_relevant_dofs,
+                                     mpi_communicator);
+  }
+
+
+  void
+  VolumeElasticity::setup_system(
+    const std::vector<DirichletCondition> &conditions)
+  {
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler,
+                                            hanging_node_constraints);
+    hanging_node_constraints.close();
+
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    constraints.merge(hanging_node_constraints);
+
+    // Dirichlet values at the face support points of every locally relevant
+    // boundary face; the first condition that claims a dof wins.
+    constrained_dofs_per_condition.assign(conditions.size(),
+                                          IndexSet(dof_handler.n_dofs()));
+    const Quadrature<2> support_points(fe.get_unit_face_support_points());
+    FEFaceValues<3>     fe_face_values(mapping,
+                                   fe,
+                                   support_points,
+                                   update_quadrature_points);
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (unsigned int c = 0; c < conditions.size(); ++c)
+      {
+        const DirichletCondition &condition = conditions[c];
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == condition.boundary_id)
+                {
+                  fe_face_values.reinit(cell, f);
+                  cell->face(f)->get_dof_indices(face_dofs);
+                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                    {
+                      const unsigned int component =
+                        fe.face_system_to_component_index(i).first;
+                      const Point<3> &p = fe_face_values.quadrature_point(i);
+                      const types::global_dof_index dof = face_dofs[i];
+                      if (!condition.components[component] ||
+                          constraints.is_constrained(dof) ||
+                          (condition.region && !condition.region(p)))
+                        continue;
+                      constraints.add_line(dof);
+                      constraints.set_inhomogeneity(
+                        dof, condition.values->value(p, component));
+                      constrained_dofs_per_condition[c].add_index(dof);
+                    }
+                }
+        constrained_dofs_per_condition[c].compress();
+      }
+    constraints.close();
+
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    system_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
+    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+  }
+
+
+  void
+  VolumeElasticity::assemble_cell(
+    const typename DoFHandler<3>::active_cell_iterator &cell,
+    FEValues<3> &                                       fe_values,
+    const Function<3> *                                 body_force,
+    FullMatrix<double> &                                cell_matrix,
+    Vector<double> &                                    cell_rhs) const
+  {
+    fe_values.reinit(cell);
+    const Layer &layer = layers.layer(cell->material_id());
+    const LinearElasticMaterial material(layer.youngs_modulus,
+                                         layer.poisson_ratio);
+    const unsigned int n_dofs = fe.n_dofs_per_cell();
+    const unsigned int n_q    = fe_values.n_quadrature_points;
+    const FEValuesExtractors::Vector displacement(0);
+    const bool mixed = parameters.formulation == Formulation::mixed;
+
+    cell_matrix = 0;
+    cell_rhs    = 0;
+
+    // Projection space of the volumetric strain (mixed): P_{p-1} on the
+    // cell, centred and scaled for conditioning.
+    const unsigned int n_p       = (parameters.degree == 1 ? 1 : 4);
+    const Point<3>     centre    = cell->center();
+    const double       scale     = 1. / cell->diameter();
+    FullMatrix<double> mass(n_p, n_p), coupling(n_p, n_dofs);
+    std::vector<double> q_basis(n_p);
+
+    std::vector<SymmetricTensor<2, 3>> eps(n_dofs);
+    std::vector<double>                div(n_dofs);
+    Vector<double>                     force(3);
+
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+            div[i] = trace(eps[i]);
+          }
+        const double lambda_q = mixed ? 0. : material.lambda;
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) +=
+              (2. * material.mu * (eps[i] * eps[j]) +
+               lambda_q * div[i] * div[j]) *
+              JxW;
+
+        if (body_force != nullptr)
+          {
+            body_force->vector_value(fe_values.quadrature_point(q), force);
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                cell_rhs(i) += fe_values.shape_value(i, q) * force(c) * JxW;
+              }
+          }
+
+        if (mixed)
+          {
+            const Point<3> &x = fe_values.quadrature_point(q);
+            q_basis[0]        = 1.;
+            for (unsigned int d = 0; d + 1 < n_p; ++d)
+              q_basis[d + 1] = (x[d] - centre[d]) * scale;
+            for (unsigned int a = 0; a < n_p; ++a)
+              {
+                for (unsigned int b = 0; b < n_p; ++b)
+                  mass(a, b) += q_basis[a] * q_basis[b] * JxW;
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  coupling(a, i) += q_basis[a] * div[i] * JxW;
+              }
+          }
+      }
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      for (unsigned int j = i + 1; j < n_dofs; ++j)
+        cell_matrix(i, j) = cell_matrix(j, i);
+
+    if (mixed)
+      {
+        // lambda * B^T M^{-1} B: the penalty on the projected divergence.
+        mass.gauss_jordan();
+        FullMatrix<double> m_inv_b(n_p, n_dofs);
+        mass.mmult(m_inv_b, coupling);
+        FullMatrix<double> volumetric(n_dofs, n_dofs);
+        coupling.Tmmult(volumetric, m_inv_b);
+        cell_matrix.add(material.lambda, volumetric);
+      }
+  }
+
+
+  void
+  VolumeElasticity::assemble(const Function<3> *body_force)
+  {
+    TimerOutput::Scope t(timer, "assembly");
+    system_matrix = 0;
+    system_rhs    = 0;
+
+    const QGauss<3>    quadrature(parameters.degree + 1);
+    FEValues<3>        fe_values(mapping,
+                          fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
+    FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
+    Vector<double>     cell_rhs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          assemble_cell(cell, fe_values, body_force, cell_matrix, cell_rhs);
+          cell->get_dof_indices(dofs);
+          constraints.distribute_local_to_global(
+            cell_matrix, cell_rhs, dofs, system_matrix, system_rhs);
+        }
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+  }
+
+
+  void
+  VolumeElasticity::setup_preconditioner()
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = parameters.degree > 1;
+    data.smoother_sweeps       = parameters.smoother_sweeps;
+    data.aggregation_threshold = parameters.aggregation_threshold;
+    // One mask per component: tells ML that there are 3 PDE equations per
+    // node; the null space itself is replaced below.
+    std::vector<std::vector<bool>> translation_modes;
+    DoFTools::extract_constant_modes(dof_handler,
+                                     ComponentMask(3, true),
+                                     translation_modes);
+    data.constant_modes = translation_modes;
+
+    if (!parameters.rigid_body_modes)
+      {
+        preconditioner.initialize(system_matrix, data);
+        return;
+      }
+
+    Teuchos::ParameterList              ml_list;
+    std::unique_ptr<Epetra_MultiVector> unused;
+    data.set_parameters(ml_list, unused, system_matrix);
+
+    // Six rigid-body modes evaluated at the support points of the locally
+    // owned dofs: three translations and three infinitesimal rotations.
+    const Epetra_Map &map = system_matrix.trilinos_matrix().DomainMap();
+    near_null_space       = std::make_unique<Epetra_MultiVector>(map, 6);
+    std::map<types::global_dof_index, Point<3>> support_points;
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
+    std::vector<unsigned char> component(locally_relevant_dofs.n_elements());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            component[locally_relevant_dofs.index_within_set(dofs[i])] =
+              fe.system_to_component_index(i).first;
+        }
+    unsigned int local = 0;
+    for (const auto dof : locally_owned_dofs)
+      {
+        const Point<3> &   x = support_points.at(dof);
+        const unsigned int c =
+          component[locally_relevant_dofs.index_within_set(dof)];
+        for (unsigned int m = 0; m < 3; ++m)
+          (*near_null_space)[m][local] = (c == m ? 1. : 0.);
+        // rotations about x, y, z: omega x X
+        const double rot[3][3] = {{0., -x[2], x[1]},
+                                  {x[2], 0., -x[0]},
+                                  {-x[1], x[0], 0.}};
+        for (unsigned int m = 0; m < 3; ++m)
+          (*near_null_space)[3 + m][local] = rot[m][c];
+        ++local;
+      }
+    ml_list.set("null space: type", "pre-computed");
+    ml_list.set("null space: dimension", near_null_space->NumVectors());
+    ml_list.set("null space: vectors", near_null_space->Values());
+    preconditioner.initialize(system_matrix, ml_list);
+  }
+
+
+  LinearSolveReport
+  VolumeElasticity::solve()
+  {
+    TimerOutput::Scope t(timer, "solve");
+    setup_preconditioner();
+
+    TrilinosWrappers::MPI::Vector solution(locally_owned_dofs,
+                                           mpi_communicator);
+    solution = locally_relevant_solution; // warm start
+    constraints.set_zero(solution);
+    const double  target = parameters.tolerance * system_rhs.l2_norm();
+    SolverControl control(parameters.max_iterations,
+                          std::max(target, 1e-300));
+    TrilinosWrappers::SolverCG cg(control);
+    try
+      {
+        cg.solve(system_matrix, solution, system_rhs, preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        AssertThrow(false,
+                    ExcMessage("CG did not converge in " +
+                               std::to_string(e.last_step) +
+                               " iterations (residual " +
+                               std::to_string(e.last_residual) +
+                               "); raise Elasticity/Linear solver/Max "
+                               "iterations or check the model."));
+      }
+    constraints.distribute(solution);
+    locally_relevant_solution = solution;
+
+    LinearSolveReport report;
+    report.iterations     = control.last_step();
+    report.final_residual = control.last_value();
+    return report;
+  }
+
+
+  Tensor<1, 3>
+  VolumeElasticity::reaction(const unsigned int condition_index,
+                             const Function<3> *body_force) const
+  {
+    AssertThrow(condition_index < constrained_dofs_per_condition.size(),
+                ExcMessage("No such Dirichlet condition."));
+    // Residual r = K u - f from the unconstrained cell contributions.
+    TrilinosWrappers::MPI::Vector residual(locally_owned_dofs,
+                                           mpi_communicator);
+    const QGauss<3>    quadrature(parameters.degree + 1);
+    FEValues<3>        fe_values(mapping,
+                          fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
+    const unsigned int n = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(n, n);
+    Vector<double>     cell_rhs(n), cell_u(n), cell_r(n);
+    std::vector<types::global_dof_index> dofs(n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          assemble_cell(cell, fe_values, body_force, cell_matrix, cell_rhs);
+          cell->get_dof_values(locally_relevant_solution, cell_u);
+          cell_matrix.vmult(cell_r, cell_u);
+          cell_r -= cell_rhs;
+          cell->get_dof_indices(dofs);
+          residual.add(dofs, cell_r);
+        }
+    residual.compress(VectorOperation::add);
+
+    // Unit field per component on the condition's dofs, extended to hanging
+    // nodes so that r . w is the condensed reaction.
+    const IndexSet &constrained = constrained_dofs_per_condition[condition_index];
+    std::vector<unsigned char> component(dof_handler.n_locally_owned_dofs(),
+                                         255);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < n; ++i)
+            if (locally_owned_dofs.is_element(dofs[i]))
+              component[locally_owned_dofs.index_within_set(dofs[i])] =
+                fe.system_to_component_index(i).first;
+        }
+    Tensor<1, 3> force;
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        TrilinosWrappers::MPI::Vector unit(locally_owned_dofs,
+                                           mpi_communicator);
+        for (const auto dof : locally_owned_dofs)
+          if (constrained.is_element(dof) &&
+              component[locally_owned_dofs.index_within_set(dof)] == d)
+            unit[dof] = 1.;
+        unit.compress(VectorOperation::insert);
+        hanging_node_constraints.distribute(unit);
+        force[d] = residual * unit;
+      }
+    return force;
+  }
+
+
+  std::pair<double, double>
+  VolumeElasticity::compute_errors(const Function<3> &exact_solution) const
+  {
+    const QGauss<3> quadrature(parameters.degree + 2);
+    Vector<float>   cell_errors(mesh.triangulation().n_active_cells());
+    VectorTools::integrate_difference(mapping,
+                                      dof_handler,
+                                      locally_relevant_solution,
+                                      exact_solution,
+                                      cell_errors,
+                                      quadrature,
+                                      VectorTools::L2_norm);
+    const double l2 = VectorTools::compute_global_error(mesh.triangulation(),
+                                                        cell_errors,
+                                                        VectorTools::L2_norm);
+    VectorTools::integrate_difference(mapping,
+                                      dof_handler,
+                                      locally_relevant_solution,
+                                      exact_solution,
+                                      cell_errors,
+                                      quadrature,
+                                      VectorTools::H1_seminorm);
+    const double h1 =
+      VectorTools::compute_global_error(mesh.triangulation(),
+                                        cell_errors,
+                                        VectorTools::H1_seminorm);
+    return {l2, h1};
+  }
+
+
+  Tensor<1, 3>
+  VolumeElasticity::point_value(const Point<3> &p) const
+  {
+    Tensor<1, 3> value;
+    double       found = 0;
+    try
+      {
+        const auto cell_and_point =
+          GridTools::find_active_cell_around_point(mapping, dof_handler, p);
+        if (cell_and_point.first->is_locally_owned())
+          {
+            const Quadrature<3> q(
+              GeometryInfo<3>::project_to_unit_cell(cell_and_point.second));
+            FEValues<3> fe_values(mapping, fe, q, update_values);
+            fe_values.reinit(cell_and_point.first);
+            std::vector<Vector<double>> values(1, Vector<double>(3));
+            fe_values.get_function_values(locally_relevant_solution, values);
+            for (unsigned int d = 0; d < 3; ++d)
+              value[d] = values[0][d];
+            found = 1;
+          }
+      }
+    catch (...)
+      {
+        // not on this rank
+      }
+    found = Utilities::MPI::sum(found, mpi_communicator);
+    AssertThrow(found > 0,
+                ExcMessage("Point outside the mesh in point_value()."));
+    value = Utilities::MPI::sum(value, mpi_communicator);
+    return value / found;
+  }
+
+
+  std::string
+  VolumeElasticity::write_vtu(const std::string &directory,
+                              const std::string &basename,
+                              const unsigned int step) const
+  {
+    const auto &tria = mesh.triangulation();
+    std::vector<Vector<float>> stress(6, Vector<float>(tria.n_active_cells()));
+    Vector<float> mises(tria.n_active_cells()), layer(tria.n_active_cells()),
+      subdomain(tria.n_active_cells());
+
+    const QGauss<3> quadrature(parameters.degree + 1);
+    FEValues<3>     fe_values(mapping,
+                          fe,
+                          quadrature,
+                          update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector       displacement(0);
+    std::vector<SymmetricTensor<2, 3>>     eps(quadrature.size());
+    static constexpr unsigned int          index[6][2] = {
+      {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(
+            locally_relevant_solution, eps);
+          SymmetricTensor<2, 3> mean_eps;
+          double                volume = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              mean_eps += eps[q] * fe_values.JxW(q);
+              volume += fe_values.JxW(q);
+            }
+          mean_eps /= volume;
+          // The cell mean of the projected divergence equals the mean of
+          // the divergence, so both formulations use the same formula.
+          const Layer &layer_data = layers.layer(cell->material_id());
+          const LinearElasticMaterial material(layer_data.youngs_modulus,
+                                               layer_data.poisson_ratio);
+          const SymmetricTensor<2, 3> sigma =
+            material.stress(mean_eps, trace(mean_eps));
+          const unsigned int k = cell->active_cell_index();
+          for (unsigned int c = 0; c < 6; ++c)
+            stress[c][k] = sigma[index[c][0]][index[c][1]];
+          mises[k]     = von_mises(sigma);
+          layer[k]     = cell->material_id();
+          subdomain[k] = tria.locally_owned_subdomain();
+        }
+
+    DataOut<3> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<std::string> names(3, "displacement");
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(3,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(locally_relevant_solution,
+                             names,
+                             DataOut<3>::type_dof_data,
+                             interpretation);
+    const char *stress_names[6] = {
+      "stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz",
+      "stress_xz"};
+    for (unsigned int c = 0; c < 6; ++c)
+      data_out.add_data_vector(stress[c], stress_names[c]);
+    data_out.add_data_vector(mises, "von_mises");
+    data_out.add_data_vector(layer, "layer");
+    data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches(mapping, parameters.degree);
+    return data_out.write_vtu_with_pvtu_record(
+      directory + "/", basename, step, mpi_communicator, 4, 0);
+  }
+} // namespace ssc

@@ -1,0 +1,188 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include <ssc/parameters.h>
+
+namespace ssc
+{
+  void
+  RunParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Run");
+    prm.declare_entry("Scene",
+                      "punch",
+                      Patterns::Selection("punch"),
+                      "What to simulate. punch: a rigid flat cylindrical "
+                      "punch pressed to a prescribed depth at the patch "
+                      "centre (linear elasticity).");
+    prm.declare_entry("Name",
+                      "punch",
+                      Patterns::Anything(),
+                      "Name of the run: results go to <Output directory>/"
+                      "<Name>/.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::Anything(),
+                      "Folder that holds one subfolder per run; relative "
+                      "paths are taken from the current working directory.");
+    prm.declare_entry("Test mode",
+                      "false",
+                      Patterns::Bool(),
+                      "Print only what is deterministic (no timings, no "
+                      "iteration counts), for reference-output tests.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  RunParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Run");
+    scene            = prm.get("Scene");
+    name             = Utilities::trim(prm.get("Name"));
+    output_directory = Utilities::trim(prm.get("Output directory"));
+    test_mode        = prm.get_bool("Test mode");
+    prm.leave_subsection();
+    AssertThrow(!name.empty() && name.find('/') == std::string::npos &&
+                  name != "." && name != "..",
+                ExcMessage("Run/Name = '" + name +
+                           "' must be a plain folder name (not empty, no "
+                           "'/')."));
+    AssertThrow(!output_directory.empty(),
+                ExcMessage("Run/Output directory must not be empty."));
+  }
+
+
+  namespace
+  {
+    /// Applies one "Section/Subsection/Name=value" override to @p prm.
+    void
+    apply_override(ParameterHandler &prm, const std::string &text)
+    {
+      const auto equal = text.find('=');
+      AssertThrow(equal != std::string::npos,
+                  ExcMessage("-s '" + text +
+                             "': expected \"Section/Name=value\"."));
+      const std::string path  = Utilities::trim(text.substr(0, equal));
+      const std::string value = Utilities::trim(text.substr(equal + 1));
+      const std::vector<std::string> parts =
+        Utilities::split_string_list(path, '/');
+      AssertThrow(!parts.empty() && !parts.back().empty(),
+                  ExcMessage("-s '" + text + "': no parameter name."));
+      unsigned int depth = 0;
+      std::string  problem;
+      try
+        {
+          for (; depth + 1 < parts.size(); ++depth)
+            prm.enter_subsection(parts[depth]);
+          prm.set(parts.back(), value);
+        }
+      catch (const ParameterHandler::ExcEntryUndeclared &)
+        {
+          problem = "there is no parameter '" + path +
+                    "' (see ssc --print-parameters).";
+        }
+      catch (const ParameterHandler::ExcValueDoesNotMatchPattern &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          problem = "the value does not match the pattern of '" + path +
+                    "': " + info.str();
+        }
+      for (unsigned int d = 0; d < depth; ++d)
+        prm.leave_subsection();
+      AssertThrow(problem.empty(),
+                  ExcMessage("-s '" + text + "': " + problem));
+    }
+  } // namespace
+
+
+  void
+  Parameters::declare(ParameterHandler &prm, const std::vector<std::string> &l)
+  {
+    RunParameters::declare_parameters(prm);
+    LayerStack::declare_parameters(prm, l);
+    MeshParameters::declare_parameters(prm);
+    ElasticityParameters::declare_parameters(prm);
+    PunchParameters::declare_parameters(prm);
+  }
+
+
+  void
+  Parameters::read(const std::string &             file,
+                   const std::vector<std::string> &overrides)
+  {
+    if (!file.empty())
+      AssertThrow(std::filesystem::is_regular_file(file),
+                  ExcMessage("Cannot open the parameter file '" + file +
+                             "': no such file."));
+
+    // First pass: only the layer list matters, everything else is skipped.
+    ParameterHandler first;
+    declare(first, {});
+    if (!file.empty())
+      first.parse_input(file, "", /*skip_undefined=*/true);
+    for (const auto &o : overrides)
+      try
+        {
+          apply_override(first, o);
+        }
+      catch (...)
+        {
+          // reported by the strict second pass
+        }
+    const std::vector<std::string> names = LayerStack::parse_layer_list(first);
+
+    // Second pass: strict.
+    prm.clear();
+    declare(prm, names);
+    if (!file.empty())
+      prm.parse_input(file);
+    for (const auto &o : overrides)
+      apply_override(prm, o);
+
+    run.parse_parameters(prm);
+    layers.parse_parameters(prm);
+    mesh.parse_parameters(prm);
+    elasticity.parse_parameters(prm);
+    punch.parse_parameters(prm);
+    check_consistency();
+  }
+
+
+  void
+  Parameters::check_consistency() const
+  {
+    layers.check_thickness_positive(mesh.patch_length_x, mesh.patch_length_y);
+    if (run.scene == "punch")
+      {
+        const double smallest =
+          std::min(mesh.patch_length_x, mesh.patch_length_y);
+        std::ostringstream msg;
+        msg << "Punch/Radius = " << punch.radius << " mm: the punch (diameter "
+            << 2 * punch.radius << " mm) does not fit in the patch ("
+            << mesh.patch_length_x << " x " << mesh.patch_length_y
+            << " mm). Enlarge Mesh/Patch length x and y or shrink the punch.";
+        AssertThrow(2 * punch.radius < smallest, ExcMessage(msg.str()));
+      }
+  }
+
+
+  void
+  Parameters::print_defaults(std::ostream &out)
+  {
+    ParameterHandler defaults;
+    declare(defaults, {"skin", "SAT", "SM", "DAT", "deep"});
+    defaults.print_parameters(out, ParameterHandler::PRM);
+  }
+
+
+  void
+  Parameters::print_used(std::ostream &out) const
+  {
+    prm.print_parameters(out, ParameterHandler::PRM);
+  }
+} // namespace ssc

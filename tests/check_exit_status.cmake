@@ -1,0 +1,15 @@
+# Runs ${SSC} on ${PRM} and checks that it exits with status 1 and that its
+# message contains the text in ${EXPECT}.
+execute_process(COMMAND ${SSC} ${PRM}
+  RESULT_VARIABLE _status OUTPUT_VARIABLE _out ERROR_VARIABLE _err
+  TIMEOUT 60)
+file(READ ${EXPECT} _expected)
+string(STRIP "${_expected}" _expected)
+if(NOT "${_status}" STREQUAL "1")
+  message(FATAL_ERROR "expected exit status 1, got '${_status}'\n${_out}\n${_err}")
+endif()
+string(FIND "${_out}${_err}" "${_expected}" _pos)
+if(_pos EQUAL -1)
+  message(FATAL_ERROR "message does not contain '${_expected}':\n${_out}\n${_err}")
+endif()
+message(STATUS "exit status 1 with: ${_expected}")
