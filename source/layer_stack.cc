@@ -203,7 +203,7 @@ namespace ssc
         const double      nu   = prm.get_double("Poisson's ratio");
         AssertThrow(nu > -1. && nu < 0.5,
                     ExcMessage(path + "Poisson's ratio = " +
-                               std::to_string(nu) +
+                               prm.get("Poisson's ratio") +
                                " is outside (-1, 0.5): nu = 0.5 is exactly "
                                "incompressible and not supported; use 0.4999."));
         const double E = prm.get_double("Young's modulus");

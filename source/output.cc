@@ -1,5 +1,6 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.templates.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -50,20 +51,27 @@ namespace ssc
     , mpi_communicator(mpi_communicator)
     , is_root(Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
   {
+    // Rank 0 creates the folder; the outcome is shared so that every rank
+    // fails together instead of waiting for a rank that gave up.
+    std::string problem;
     if (is_root)
       {
         std::error_code error;
         std::filesystem::create_directories(folder, error);
-        AssertThrow(!error,
-                    ExcMessage("Cannot create the output folder '" + folder +
-                               "': " + error.message()));
-        std::filesystem::remove(path("summary.json"));
-        log_file.open(path("log.txt"));
-        AssertThrow(log_file,
-                    ExcMessage("Cannot write into the output folder '" +
-                               folder + "'."));
+        if (error)
+          problem = "Cannot create the output folder '" + folder +
+                    "': " + error.message();
+        else
+          {
+            std::filesystem::remove(path("summary.json"), error);
+            log_file.open(path("log.txt"));
+            if (!log_file)
+              problem =
+                "Cannot write into the output folder '" + folder + "'.";
+          }
       }
-    MPI_Barrier(mpi_communicator);
+    problem = Utilities::MPI::broadcast(mpi_communicator, problem, 0);
+    AssertThrow(problem.empty(), ExcMessage(problem));
     tee_buffer = std::make_unique<TeeBuffer>(
       print_to_stdout ? std::cout.rdbuf() : nullptr,
       is_root ? log_file.rdbuf() : nullptr);

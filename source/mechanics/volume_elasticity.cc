@@ -326,7 +326,9 @@ namespace ssc
     constraints.set_zero(solution);
     const double  target = parameters.tolerance * system_rhs.l2_norm();
     SolverControl control(parameters.max_iterations,
-                          std::max(target, 1e-300));
+                          std::max(target, 1e-300),
+                          false,
+                          false);
     TrilinosWrappers::SolverCG cg(control);
     try
       {

@@ -63,7 +63,7 @@ namespace ssc
   } // namespace
 
 
-  void
+  PunchResult
   PunchScene::run()
   {
     const RunParameters &run = parameters.run;
@@ -232,5 +232,6 @@ namespace ssc
               << ", output " << wall["output"] << ")" << std::endl;
         pcout << "Results in " << output.directory() << "/" << std::endl;
       }
+    return {elasticity.n_dofs(), depths, forces, stiffness, reference};
   }
 } // namespace ssc

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <vector>
+
 #include <ssc/parameters.h>
 
 namespace ssc
@@ -14,12 +16,22 @@ namespace ssc
    * Writes summary.json, force_displacement.csv, parameters.prm, log.txt and
    * the volume fields (volume.pvd) into output/<run name>/.
    */
+  /// What the punch scene measured.
+  struct PunchResult
+  {
+    types::global_dof_index dofs = 0;
+    std::vector<double>     depths;
+    std::vector<double>     forces;
+    double                  stiffness           = 0;
+    double                  half_space_stiffness = 0;
+  };
+
   class PunchScene
   {
   public:
     PunchScene(const Parameters &parameters, const MPI_Comm mpi_communicator);
 
-    void
+    PunchResult
     run();
 
     /// Half-space stiffness F/delta of a rigid flat punch of radius @p a on

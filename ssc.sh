@@ -1,0 +1,75 @@
+#!/bin/bash
+# ssc.sh: set-up, build, run and test in one place (see README.md).
+#   ./ssc.sh run [FILE.prm] [ssc options]   install, build, run the main scene
+#   ./ssc.sh test                           install, build, run the test suite
+#   ./ssc.sh build                          install and build only
+set -euo pipefail
+ROOT="$(cd "$(dirname "$0")" && pwd)"
+BUILD="${SSC_BUILD_DIR:-$ROOT/build}"
+JOBS="${SSC_JOBS:-2}"
+MAIN_SCENE="$ROOT/prm/punch.prm"   # becomes the forearm indentation scene
+
+PACKAGES="libdeal.ii-dev libcgal-dev libeigen3-dev libboost-dev
+  nlohmann-json3-dev numdiff cmake ninja-build ccache openmpi-bin
+  python3-matplotlib python3-numpy"
+
+install_packages() {
+  local missing=""
+  for p in $PACKAGES; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" ||
+      missing="$missing $p"
+  done
+  if [ -n "$missing" ]; then
+    echo "ssc.sh: installing Debian packages:$missing"
+    local sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq \
+      --no-install-recommends $missing
+  fi
+}
+
+configure() {
+  export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
+  cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DSSC_ENABLE_TESTS=ON > "$BUILD/cmake.log" 2>&1 ||
+    { cat "$BUILD/cmake.log"; exit 1; }
+}
+
+build() {
+  install_packages
+  mkdir -p "$BUILD"
+  configure
+  cmake --build "$BUILD" --target ssc_app -- -j "$JOBS"
+}
+
+# mpirun refuses root unless told; CI runs as root.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+
+case "${1:-run}" in
+  build)
+    build
+    ;;
+  run)
+    shift || true
+    build
+    cd "$ROOT"
+    if [ $# -gt 0 ] && [[ "$1" != -* ]]; then
+      prm="$1"; shift
+    else
+      prm="$MAIN_SCENE"
+    fi
+    "$BUILD/bin/ssc" "$prm" "$@"
+    ;;
+  test)
+    build
+    cd "$BUILD"
+    # builds the test programs and runs them (deal.II test driver)
+    ctest --output-on-failure -j "$JOBS" --timeout 900
+    ;;
+  *)
+    echo "usage: $0 run [FILE.prm] [-s ...] | test | build" >&2
+    exit 1
+    ;;
+esac

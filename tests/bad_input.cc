@@ -1,0 +1,108 @@
+// Bad input never crashes: each case gives exit status 1 and one message
+// that names the parameter (and file and line where the parser knows them).
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <ssc/application.h>
+
+#include "tests.h"
+
+namespace
+{
+  const char *valid_stack = R"(
+subsection Layer stack
+  set Layers = skin, fat
+  subsection skin
+    set Thickness = 1.5
+  end
+  subsection fat
+    set Thickness = 4
+  end
+end
+)";
+
+  void
+  check(const std::string &             label,
+        const std::string &             prm_text,
+        const std::vector<std::string> &extra_arguments = {})
+  {
+    const std::string file = "case.prm";
+    {
+      std::ofstream out(file);
+      out << prm_text;
+    }
+    std::vector<std::string> arguments = {file};
+    arguments.insert(arguments.end(),
+                     extra_arguments.begin(),
+                     extra_arguments.end());
+    std::ostringstream out, err;
+    const int          status =
+      ssc::run_command_line(arguments, MPI_COMM_WORLD, out, err);
+    std::string message = err.str();
+    // the file name is written by the test itself; keep only its base name
+    const std::string full = std::filesystem::absolute(file).string();
+    for (auto pos = message.find(full); pos != std::string::npos;
+         pos      = message.find(full))
+      message.replace(pos, full.size(), file);
+    while (!message.empty() && message.back() == '\n')
+      message.pop_back();
+    dealii::deallog << label << ": exit status " << status << std::endl
+                    << "  " << message << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+
+  {
+    std::ostringstream out, err;
+    const int          status =
+      ssc::run_command_line({"no/such/file.prm"}, MPI_COMM_WORLD, out, err);
+    std::string message = err.str();
+    message.pop_back(); // the final newline
+    dealii::deallog << "missing file: exit status " << status << std::endl
+                    << "  " << message << std::endl;
+  }
+  check("unknown parameter", "subsection Mesh\n  set Cell sise = 2\nend\n");
+  check("unknown section", "subsection Meshes\n  set Cell size = 2\nend\n");
+  check("malformed value", "subsection Mesh\n  set Cell size = two\nend\n");
+  check("negative modulus",
+        "subsection Layer stack\n  set Layers = skin\n  subsection skin\n"
+        "    set Young's modulus = -0.02\n  end\nend\n");
+  check("nu = 0.5",
+        "subsection Layer stack\n  set Layers = skin\n  subsection skin\n"
+        "    set Poisson's ratio = 0.5\n  end\nend\n");
+  check("nu > 0.5",
+        "subsection Layer stack\n  set Layers = skin\n  subsection skin\n"
+        "    set Poisson's ratio = 0.7\n  end\nend\n");
+  check("no layers", "subsection Layer stack\n  set Layers =\nend\n");
+  check("duplicate layer",
+        "subsection Layer stack\n  set Layers = fat, fat\nend\n");
+  check("negative thickness",
+        "subsection Layer stack\n  set Layers = skin\n  subsection skin\n"
+        "    set Thickness = -1\n  end\nend\n");
+  check("thickness negative at the patch edge",
+        "subsection Layer stack\n  set Layers = skin\n  subsection skin\n"
+        "    set Thickness = 1 + 0.1*x\n  end\nend\n");
+  check("thickness not an expression",
+        "subsection Layer stack\n  set Layers = skin\n  subsection skin\n"
+        "    set Thickness = 1 + wobble\n  end\nend\n");
+  check("punch wider than the patch",
+        std::string(valid_stack) +
+          "subsection Punch\n  set Radius = 25\nend\n");
+  check("unknown -s parameter",
+        valid_stack,
+        {"-s", "Mesh/Cell sise=1"});
+  check("-s value out of range",
+        valid_stack,
+        {"-s", "Elasticity/Degree=7"});
+  check("-s without '='", valid_stack, {"-s", "Mesh/Cell size"});
+  check("unknown option", valid_stack, {"--fast"});
+  check("empty run name", std::string(valid_stack) +
+                            "subsection Run\n  set Name = \nend\n");
+}
