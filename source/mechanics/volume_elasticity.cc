@@ -37,6 +37,9 @@ namespace ssc
     , fe(FE_Q<3>(parameters.degree), 3)
     , mapping(1)
     , dof_handler(mesh.triangulation())
+    , cell_quadrature(parameters.degree + 1)
+    , assembly_flags(update_values | update_gradients |
+                     update_quadrature_points | update_JxW_values)
   {}
 
 
@@ -226,12 +229,7 @@ namespace ssc
     system_matrix = 0;
     system_rhs    = 0;
 
-    const QGauss<3>    quadrature(parameters.degree + 1);
-    FEValues<3>        fe_values(mapping,
-                          fe,
-                          quadrature,
-                          update_values | update_gradients |
-                            update_quadrature_points | update_JxW_values);
+    FEValues<3> fe_values(mapping, fe, cell_quadrature, assembly_flags);
     FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
     Vector<double>     cell_rhs(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -363,12 +361,7 @@ namespace ssc
     // Residual r = K u - f from the unconstrained cell contributions.
     TrilinosWrappers::MPI::Vector residual(locally_owned_dofs,
                                            mpi_communicator);
-    const QGauss<3>    quadrature(parameters.degree + 1);
-    FEValues<3>        fe_values(mapping,
-                          fe,
-                          quadrature,
-                          update_values | update_gradients |
-                            update_quadrature_points | update_JxW_values);
+    FEValues<3> fe_values(mapping, fe, cell_quadrature, assembly_flags);
     const unsigned int n = fe.n_dofs_per_cell();
     FullMatrix<double> cell_matrix(n, n);
     Vector<double>     cell_rhs(n), cell_u(n), cell_r(n);

@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
 
@@ -154,6 +155,9 @@ namespace ssc
     FESystem<3>   fe;
     MappingQ<3>   mapping;
     DoFHandler<3> dof_handler;
+    /// Quadrature and update flags of the one cell assembly routine.
+    const QGauss<3>   cell_quadrature;
+    const UpdateFlags assembly_flags;
     IndexSet      locally_owned_dofs;
     IndexSet      locally_relevant_dofs;
 
