@@ -44,6 +44,16 @@ namespace ssc
                       Patterns::Integer(0, 8),
                       "Uniform refinements of the coarse mesh (each halves "
                       "every cell size, in the layers too).");
+    prm.declare_entry(
+      "Fitted circle radius",
+      "0",
+      Patterns::Double(0),
+      "Radius a (mm) of a circle around the patch centre that mesh lines "
+      "follow exactly, e.g. the edge of a punch (0: none). The square "
+      "|x|, |y| <= a of the Cartesian mesh is mapped onto the disk r <= a and "
+      "blended back to the undistorted mesh at |x|, |y| = 2a, so a must be "
+      "on a mesh line of the refined mesh (a multiple of the core cell size "
+      "after refinement, measured from the patch centre).");
     prm.enter_subsection("Region of interest");
     prm.declare_entry("Ring radius",
                       "0",
@@ -65,7 +75,7 @@ namespace ssc
                       "geometric refinement towards a singular edge).");
     prm.declare_entry("Local refinements",
                       "0",
-                      Patterns::Integer(0, 10),
+                      Patterns::Integer(0, 20),
                       "Number of local refinements of the cells touching the "
                       "region (hanging nodes are constrained).");
     prm.leave_subsection();
@@ -83,6 +93,7 @@ namespace ssc
     core_half_width    = prm.get_double("Core half width");
     grading_ratio      = prm.get_double("Grading ratio");
     global_refinements = prm.get_integer("Global refinements");
+    fitted_circle_radius = prm.get_double("Fitted circle radius");
     prm.enter_subsection("Region of interest");
     roi_radius        = prm.get_double("Ring radius");
     roi_width         = prm.get_double("Width");
@@ -105,6 +116,11 @@ namespace ssc
                            "more than 5e7 cells in one layer; this machine "
                            "cannot hold that. Use a larger cell size, fewer "
                            "refinements or grading."));
+    AssertThrow(4 * fitted_circle_radius <
+                  std::min(patch_length_x, patch_length_y),
+                ExcMessage("Mesh/Fitted circle radius: the fitted circle "
+                           "and its blending zone (twice the radius) must "
+                           "lie inside the patch."));
   }
 
 
@@ -200,7 +216,8 @@ namespace ssc
                                static_cast<unsigned int>(
                                  std::floor(-cell->center()[2]))));
 
-    const LayerManifold layer_map(layers);
+    const LayerManifold layer_map(
+      layers, DiskFittingMap(parameters.fitted_circle_radius));
     GridTools::transform(
       [&layer_map](const Point<3> &p) { return layer_map.push_forward(p); },
       coarse);
@@ -210,6 +227,32 @@ namespace ssc
     tria.set_manifold(0, layer_map);
     tria.refine_global(parameters.global_refinements);
     refine_region_of_interest();
+    if (parameters.fitted_circle_radius > 0)
+      check_fitted_circle();
+  }
+
+
+  void
+  BackgroundMesh::check_fitted_circle() const
+  {
+    const double a     = parameters.fitted_circle_radius;
+    unsigned int found = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const Point<3> &p = cell->vertex(v);
+            if (std::abs(p[2]) < 1e-12 &&
+                std::abs(std::hypot(p[0], p[1]) - a) < 1e-9 * a)
+              ++found;
+          }
+    found = Utilities::MPI::sum(found, tria.get_communicator());
+    AssertThrow(found >= 8,
+                ExcMessage("Mesh/Fitted circle radius = " + std::to_string(a) +
+                           " mm does not lie on a mesh line of the refined "
+                           "mesh: choose Cell size, Core half width and the "
+                           "refinements so that a is a multiple of the core "
+                           "cell size on the refined mesh."));
   }
 
 

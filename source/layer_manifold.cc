@@ -5,22 +5,26 @@
 
 namespace ssc
 {
-  LayerManifold::LayerManifold(const LayerStack &layers)
+  LayerManifold::LayerManifold(const LayerStack &    layers,
+                               const DiskFittingMap &disk_map)
     : layers(layers)
+    , disk_map(disk_map)
   {}
 
 
   std::unique_ptr<Manifold<3, 3>>
   LayerManifold::clone() const
   {
-    return std::make_unique<LayerManifold>(layers);
+    return std::make_unique<LayerManifold>(layers, disk_map);
   }
 
 
   Point<3>
   LayerManifold::push_forward(const Point<3> &chart_point) const
   {
-    const double       x = chart_point[0], y = chart_point[1];
+    const Point<2> xy =
+      disk_map.forward(Point<2>(chart_point[0], chart_point[1]));
+    const double       x = xy[0], y = xy[1];
     const double       s = std::max(0., -chart_point[2]);
     const unsigned int n = layers.n_layers();
     const unsigned int i =
@@ -42,9 +46,14 @@ namespace ssc
       {
         const double t = layers.layer(i).thickness(x, y);
         if (depth <= top + t || i == n - 1)
-          return Point<3>(x, y, -(i + (depth - top) / t));
+          {
+            const Point<2> chart_xy = disk_map.inverse(Point<2>(x, y));
+            return Point<3>(chart_xy[0],
+                            chart_xy[1],
+                            -(i + (depth - top) / t));
+          }
         top += t;
       }
-    return Point<3>(x, y, 0.);
+    return Point<3>(x, y, 0.); // not reached: the last layer always returns
   }
 } // namespace ssc

@@ -4,7 +4,10 @@
 // imposes only u_z = -delta under the punch and leaves the surface free to
 // slide, which is exactly Sneddon's mixed boundary-value problem (a bonded
 // punch would be stiffer by (1 - nu) ln(3 - 4 nu) / (1 - 2 nu), 2.9 % at
-// nu = 0.3). Levels refine towards the punch edge.
+// nu = 0.3). Levels refine towards the punch edge, whose circle the mesh
+// lines follow exactly; the discrete stiffness then converges from above
+// (conforming displacement FE under displacement control), like the fixed
+// bottom of the finite block, which adds about +0.2 %.
 
 #include <cmath>
 #include <iomanip>
@@ -21,7 +24,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
   double error = 0;
-  for (const unsigned int level : {7u, 8u, 9u})
+  for (const unsigned int level : {10u, 11u, 12u})
     {
       ssc::Parameters parameters;
       parameters.read(SOURCE_DIR "/../benchmarks/punch_sneddon.prm",

@@ -33,6 +33,9 @@ namespace ssc
     double core_half_width     = 10;
     double grading_ratio       = 1;
     unsigned int global_refinements = 0;
+    /// Radius of the circle around the centre that mesh lines follow
+    /// (0: none); see DiskFittingMap.
+    double fitted_circle_radius = 0;
 
     /// Region of interest: a ring of radius roi_radius (0: a disk) around
     /// the patch centre at the skin surface, of width and depth roi_width.
@@ -87,6 +90,10 @@ namespace ssc
   private:
     void
     refine_region_of_interest();
+
+    /// Throws unless mesh vertices lie on the fitted circle at the surface.
+    void
+    check_fitted_circle() const;
 
     const LayerStack &                      layers;
     const MeshParameters &                  parameters;

@@ -3,6 +3,7 @@
 
 #include <deal.II/grid/manifold.h>
 
+#include <ssc/disk_fitting_map.h>
 #include <ssc/layer_stack.h>
 
 namespace ssc
@@ -16,11 +17,15 @@ namespace ssc
    * Used as the manifold of every cell, so that refinement places new
    * vertices on the layer interfaces exactly, and by the microstructure,
    * which is built in (x, y, zeta) and mapped the same way.
+   *
+   * Optionally the lateral coordinates first pass through a DiskFittingMap,
+   * so that mesh lines follow a circle around the patch centre (a punch).
    */
   class LayerManifold : public ChartManifold<3, 3, 3>
   {
   public:
-    explicit LayerManifold(const LayerStack &layers);
+    LayerManifold(const LayerStack &    layers,
+                  const DiskFittingMap &disk_map = DiskFittingMap());
 
     std::unique_ptr<Manifold<3, 3>>
     clone() const override;
@@ -32,7 +37,8 @@ namespace ssc
     push_forward(const Point<3> &chart_point) const override;
 
   private:
-    const LayerStack &layers;
+    const LayerStack &   layers;
+    const DiskFittingMap disk_map;
   };
 } // namespace ssc
 
