@@ -414,28 +414,20 @@ namespace ssc
   {
     const QGauss<3> quadrature(parameters.degree + 2);
     Vector<float>   cell_errors(mesh.triangulation().n_active_cells());
-    VectorTools::integrate_difference(mapping,
-                                      dof_handler,
-                                      locally_relevant_solution,
-                                      exact_solution,
-                                      cell_errors,
-                                      quadrature,
-                                      VectorTools::L2_norm);
-    const double l2 = VectorTools::compute_global_error(mesh.triangulation(),
-                                                        cell_errors,
-                                                        VectorTools::L2_norm);
-    VectorTools::integrate_difference(mapping,
-                                      dof_handler,
-                                      locally_relevant_solution,
-                                      exact_solution,
-                                      cell_errors,
-                                      quadrature,
-                                      VectorTools::H1_seminorm);
-    const double h1 =
-      VectorTools::compute_global_error(mesh.triangulation(),
+    const auto      global_error = [&](const VectorTools::NormType norm) {
+      VectorTools::integrate_difference(mapping,
+                                        dof_handler,
+                                        locally_relevant_solution,
+                                        exact_solution,
                                         cell_errors,
-                                        VectorTools::H1_seminorm);
-    return {l2, h1};
+                                        quadrature,
+                                        norm);
+      return VectorTools::compute_global_error(mesh.triangulation(),
+                                               cell_errors,
+                                               norm);
+    };
+    return {global_error(VectorTools::L2_norm),
+            global_error(VectorTools::H1_seminorm)};
   }
 
 
