@@ -43,6 +43,12 @@ namespace ssc
                       "Give the AMG preconditioner the six rigid-body modes "
                       "as near-null space (true) or only the three "
                       "translations (false, for comparison).");
+    prm.declare_entry("Smoothed aggregation",
+                      "true",
+                      Patterns::Bool(),
+                      "Smooth the AMG prolongator (true: fewest CG "
+                      "iterations) or use plain aggregation (false: about "
+                      "35 % less memory, about 1.7 times the iterations).");
     prm.declare_entry("Aggregation threshold",
                       "1e-4",
                       Patterns::Double(0, 1),
@@ -71,6 +77,7 @@ namespace ssc
     tolerance             = prm.get_double("Tolerance");
     max_iterations        = prm.get_integer("Max iterations");
     rigid_body_modes      = prm.get_bool("Rigid body modes");
+    smoothed_aggregation  = prm.get_bool("Smoothed aggregation");
     aggregation_threshold = prm.get_double("Aggregation threshold");
     smoother_sweeps       = prm.get_integer("Smoother sweeps");
     prm.leave_subsection();

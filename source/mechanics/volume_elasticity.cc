@@ -7,10 +7,9 @@
 
 #include <deal.II/grid/grid_tools.h>
 
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -118,16 +117,20 @@ namespace ssc
       }
     constraints.close();
 
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp,
+    // Built directly in Trilinos' compressed format: a DynamicSparsityPattern
+    // would double the peak memory of this step.
+    TrilinosWrappers::SparsityPattern sparsity(locally_owned_dofs,
                                                locally_owned_dofs,
-                                               mpi_communicator,
-                                               locally_relevant_dofs);
-    system_matrix.reinit(locally_owned_dofs,
-                         locally_owned_dofs,
-                         dsp,
-                         mpi_communicator);
+                                               locally_relevant_dofs,
+                                               mpi_communicator);
+    DoFTools::make_sparsity_pattern(
+      dof_handler,
+      sparsity,
+      constraints,
+      false,
+      Utilities::MPI::this_mpi_process(mpi_communicator));
+    sparsity.compress();
+    system_matrix.reinit(sparsity);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
   }
 
@@ -305,6 +308,11 @@ namespace ssc
           (*near_null_space)[3 + m][local] = rot[m][c];
         ++local;
       }
+    // Three equations per support point: ML aggregates whole nodes (the
+    // three components of a point are numbered consecutively).
+    ml_list.set("PDE equations", 3);
+    if (!parameters.smoothed_aggregation)
+      ml_list.set("aggregation: damping factor", 0.);
     ml_list.set("null space: type", "pre-computed");
     ml_list.set("null space: dimension", near_null_space->NumVectors());
     ml_list.set("null space: vectors", near_null_space->Values());
@@ -358,54 +366,41 @@ namespace ssc
   {
     AssertThrow(condition_index < constrained_dofs_per_condition.size(),
                 ExcMessage("No such Dirichlet condition."));
-    // Residual r = K u - f from the unconstrained cell contributions.
-    TrilinosWrappers::MPI::Vector residual(locally_owned_dofs,
-                                           mpi_communicator);
+    // Virtual work of the residual r = K u - f (unconstrained cell
+    // contributions) against a unit field w on the condition's dofs,
+    // extended to the hanging nodes that depend on them. w vanishes on all
+    // other dofs, so only the cells that touch its support contribute.
+    TrilinosWrappers::MPI::Vector unit(locally_owned_dofs, mpi_communicator);
+    for (const auto dof : constrained_dofs_per_condition[condition_index])
+      if (locally_owned_dofs.is_element(dof))
+        unit[dof] = 1.;
+    unit.compress(VectorOperation::insert);
+    hanging_node_constraints.distribute(unit);
+    TrilinosWrappers::MPI::Vector weight(locally_owned_dofs,
+                                         locally_relevant_dofs,
+                                         mpi_communicator);
+    weight = unit;
+
     FEValues<3> fe_values(mapping, fe, cell_quadrature, assembly_flags);
     const unsigned int n = fe.n_dofs_per_cell();
     FullMatrix<double> cell_matrix(n, n);
-    Vector<double>     cell_rhs(n), cell_u(n), cell_r(n);
-    std::vector<types::global_dof_index> dofs(n);
+    Vector<double>     cell_rhs(n), cell_u(n), cell_r(n), cell_w(n);
+    Tensor<1, 3>       force;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
+          cell->get_dof_values(weight, cell_w);
+          if (cell_w.linfty_norm() == 0.)
+            continue;
           assemble_cell(cell, fe_values, body_force, cell_matrix, cell_rhs);
           cell->get_dof_values(locally_relevant_solution, cell_u);
           cell_matrix.vmult(cell_r, cell_u);
           cell_r -= cell_rhs;
-          cell->get_dof_indices(dofs);
-          residual.add(dofs, cell_r);
-        }
-    residual.compress(VectorOperation::add);
-
-    // Unit field per component on the condition's dofs, extended to hanging
-    // nodes so that r . w is the condensed reaction.
-    const IndexSet &constrained = constrained_dofs_per_condition[condition_index];
-    std::vector<unsigned char> component(dof_handler.n_locally_owned_dofs(),
-                                         255);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < n; ++i)
-            if (locally_owned_dofs.is_element(dofs[i]))
-              component[locally_owned_dofs.index_within_set(dofs[i])] =
-                fe.system_to_component_index(i).first;
+            force[fe.system_to_component_index(i).first] +=
+              cell_r(i) * cell_w(i);
         }
-    Tensor<1, 3> force;
-    for (unsigned int d = 0; d < 3; ++d)
-      {
-        TrilinosWrappers::MPI::Vector unit(locally_owned_dofs,
-                                           mpi_communicator);
-        for (const auto dof : locally_owned_dofs)
-          if (constrained.is_element(dof) &&
-              component[locally_owned_dofs.index_within_set(dof)] == d)
-            unit[dof] = 1.;
-        unit.compress(VectorOperation::insert);
-        hanging_node_constraints.distribute(unit);
-        force[d] = residual * unit;
-      }
-    return force;
+    return Utilities::MPI::sum(force, mpi_communicator);
   }
 
 
@@ -532,6 +527,9 @@ namespace ssc
     data_out.add_data_vector(layer, "layer");
     data_out.add_data_vector(subdomain, "subdomain");
     data_out.build_patches(mapping, parameters.degree);
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
     return data_out.write_vtu_with_pvtu_record(
       directory + "/", basename, step, mpi_communicator, 4, 0);
   }

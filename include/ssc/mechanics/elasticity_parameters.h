@@ -36,6 +36,7 @@ namespace ssc
     double        tolerance     = 1e-8;
     unsigned int  max_iterations = 1000;
     bool          rigid_body_modes = true;
+    bool          smoothed_aggregation = true;
     double        aggregation_threshold = 1e-4;
     unsigned int  smoother_sweeps = 2;
 
