@@ -9,6 +9,7 @@
 #include <ssc/mechanics/volume_elasticity.h>
 #include <ssc/output.h>
 #include <ssc/scenes/punch_scene.h>
+#include <ssc/scenes/scene_run.h>
 
 namespace ssc
 {
@@ -67,24 +68,10 @@ namespace ssc
   PunchScene::run()
   {
     const RunParameters &run = parameters.run;
-    RunOutput output(run.output_directory + "/" + run.name,
-                     mpi_communicator,
-                     true);
-    ConditionalOStream &pcout = output.progress();
-    TimerOutput         timer(mpi_communicator,
-                      pcout,
-                      TimerOutput::never,
-                      TimerOutput::wall_times);
-    Timer total_timer(mpi_communicator, true);
-
-    {
-      std::ostringstream used;
-      parameters.print_used(used);
-      output.write_text("parameters.prm", used.str());
-    }
-    pcout << "ssc punch scene '" << run.name << "' on "
-          << Utilities::MPI::n_mpi_processes(mpi_communicator)
-          << " MPI rank(s)" << std::endl;
+    SceneRun             scene(parameters, mpi_communicator, "punch");
+    RunOutput &          output = scene.output();
+    ConditionalOStream & pcout  = scene.pcout();
+    TimerOutput &        timer  = scene.timer();
 
     BackgroundMesh mesh(parameters.layers, parameters.mesh, mpi_communicator);
     {
@@ -179,16 +166,9 @@ namespace ssc
       output.write_text("force_displacement.csv", csv.str());
     }
 
-    auto wall = timer.get_summary_data(TimerOutput::total_wall_time);
-    nlohmann::ordered_json summary;
-    summary["scene"]     = "punch";
-    summary["run"]       = run.name;
-    summary["dofs"]      = elasticity.n_dofs();
-    summary["cells"]     = mesh.triangulation().n_global_active_cells();
-    summary["embedded"]  = {{"septa_triangles", 0},
-                           {"ligament_segments", 0},
-                           {"lobules", 0}};
-    summary["mpi_ranks"] = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    nlohmann::ordered_json summary =
+      scene.summary(elasticity.n_dofs(),
+                    mesh.triangulation().n_global_active_cells());
     summary["discretisation"] = {
       {"degree", parameters.elasticity.degree},
       {"formulation",
@@ -210,28 +190,8 @@ namespace ssc
     summary["depth_mm"]           = depths;
     summary["stiffness_N_per_mm"] = stiffness;
     summary["half_space_stiffness_N_per_mm"] = reference;
-    summary["timings"] = {{"mesh", wall["mesh"]},
-                          {"microstructure", 0.},
-                          {"embedding", 0.},
-                          {"setup", wall["setup"]},
-                          {"assembly", wall["assembly"]},
-                          {"solve", wall["solve"]},
-                          {"output", wall["output"]},
-                          {"total", total_timer.wall_time()}};
-    Utilities::System::MemoryStats memory;
-    Utilities::System::get_memory_stats(memory);
-    summary["memory_MB"] =
-      Utilities::MPI::sum(memory.VmHWM / 1024., mpi_communicator);
     output.write_summary(summary);
-
-    if (!run.test_mode)
-      {
-        pcout << "Wall time: " << total_timer.wall_time() << " s (mesh "
-              << wall["mesh"] << ", setup " << wall["setup"] << ", assembly "
-              << wall["assembly"] << ", solve " << wall["solve"]
-              << ", output " << wall["output"] << ")" << std::endl;
-        pcout << "Results in " << output.directory() << "/" << std::endl;
-      }
+    scene.print_wall_times();
     return {elasticity.n_dofs(), depths, forces, stiffness, reference};
   }
 } // namespace ssc

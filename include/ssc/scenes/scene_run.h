@@ -1,0 +1,70 @@
+#ifndef ssc_scenes_scene_run_h
+#define ssc_scenes_scene_run_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include <ssc/output.h>
+#include <ssc/parameters.h>
+
+namespace ssc
+{
+  /**
+   * What every scene does around its physics: opens output/<run name>/
+   * (log, used parameters), times the phases of DESIGN.md §3 (mesh,
+   * microstructure, embedding, setup, assembly, solve, output) and fills the
+   * common part of summary.json (scene, run, mpi_ranks, timings, memory).
+   */
+  class SceneRun
+  {
+  public:
+    SceneRun(const Parameters & parameters,
+             const MPI_Comm     mpi_communicator,
+             const std::string &scene_name);
+
+    RunOutput &
+    output()
+    {
+      return run_output;
+    }
+
+    ConditionalOStream &
+    pcout()
+    {
+      return run_output.progress();
+    }
+
+    TimerOutput &
+    timer()
+    {
+      return phase_timer;
+    }
+
+    /// summary.json with the keys every scene has (embedded counts and
+    /// solver statistics zero until the scene sets them); the scene adds its
+    /// own results.
+    nlohmann::ordered_json
+    summary(const types::global_dof_index dofs,
+            const types::global_cell_index cells) const;
+
+    /// One line with the wall time per phase (not in test mode).
+    void
+    print_wall_times();
+
+  private:
+    const Parameters &parameters;
+    MPI_Comm          mpi_communicator;
+    std::string       scene_name;
+    RunOutput         run_output;
+    TimerOutput       phase_timer;
+    Timer             total_timer;
+    double            memory_at_start_MB;
+  };
+} // namespace ssc
+
+#endif
