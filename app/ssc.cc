@@ -2,9 +2,9 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <iostream>
-
 #include <ssc/application.h>
+
+#include <iostream>
 
 int
 main(int argc, char **argv)

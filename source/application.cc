@@ -1,11 +1,12 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <sstream>
-
 #include <ssc/application.h>
 #include <ssc/parameters.h>
+#include <ssc/scenes/geometry_scene.h>
 #include <ssc/scenes/punch_scene.h>
+
+#include <sstream>
 
 namespace ssc
 {
@@ -52,11 +53,11 @@ namespace ssc
   int
   run_command_line(const std::vector<std::string> &arguments,
                    const MPI_Comm                  mpi_communicator,
-                   std::ostream &                  out,
-                   std::ostream &                  err)
+                   std::ostream                   &out,
+                   std::ostream                   &err)
   {
-    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
-    std::string              file;
+    const bool  root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    std::string file;
     std::vector<std::string> overrides;
     bool                     check_only = false;
     try
@@ -112,6 +113,8 @@ namespace ssc
           }
         if (parameters.run.scene == "punch")
           PunchScene(parameters, mpi_communicator).run();
+        else if (parameters.run.scene == "geometry")
+          GeometryScene(parameters, mpi_communicator).run();
         return 0;
       }
     catch (const ExceptionBase &e)

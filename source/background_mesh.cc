@@ -4,9 +4,9 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
-#include <cmath>
-
 #include <ssc/background_mesh.h>
+
+#include <cmath>
 
 namespace ssc
 {
@@ -87,12 +87,12 @@ namespace ssc
   MeshParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    patch_length_x     = prm.get_double("Patch length x");
-    patch_length_y     = prm.get_double("Patch length y");
-    cell_size          = prm.get_double("Cell size");
-    core_half_width    = prm.get_double("Core half width");
-    grading_ratio      = prm.get_double("Grading ratio");
-    global_refinements = prm.get_integer("Global refinements");
+    patch_length_x       = prm.get_double("Patch length x");
+    patch_length_y       = prm.get_double("Patch length y");
+    cell_size            = prm.get_double("Cell size");
+    core_half_width      = prm.get_double("Core half width");
+    grading_ratio        = prm.get_double("Grading ratio");
+    global_refinements   = prm.get_integer("Global refinements");
     fitted_circle_radius = prm.get_double("Fitted circle radius");
     prm.enter_subsection("Region of interest");
     roi_radius        = prm.get_double("Ring radius");
@@ -104,13 +104,13 @@ namespace ssc
 
     AssertThrow(patch_length_x > 0 && patch_length_y > 0,
                 ExcMessage("Mesh/Patch length x and y must be positive (mm)."));
-    AssertThrow(cell_size > 0 && cell_size <= std::max(patch_length_x,
-                                                       patch_length_y),
+    AssertThrow(cell_size > 0 &&
+                  cell_size <= std::max(patch_length_x, patch_length_y),
                 ExcMessage("Mesh/Cell size must be positive and not larger "
                            "than the patch."));
-    const double n_cells_estimate =
-      std::ceil(patch_length_x / cell_size) *
-      std::ceil(patch_length_y / cell_size) * std::pow(8., global_refinements);
+    const double n_cells_estimate = std::ceil(patch_length_x / cell_size) *
+                                    std::ceil(patch_length_y / cell_size) *
+                                    std::pow(8., global_refinements);
     AssertThrow(n_cells_estimate < 5e7,
                 ExcMessage("Mesh/Cell size and Global refinements ask for "
                            "more than 5e7 cells in one layer; this machine "
@@ -124,7 +124,7 @@ namespace ssc
   }
 
 
-  BackgroundMesh::BackgroundMesh(const LayerStack &    layers,
+  BackgroundMesh::BackgroundMesh(const LayerStack     &layers,
                                  const MeshParameters &parameters,
                                  const MPI_Comm        mpi_communicator)
     : layers(layers)
@@ -180,7 +180,7 @@ namespace ssc
     std::vector<double> z_steps;
     for (int l = n_layers - 1; l >= 0; --l)
       {
-        const Layer &       layer = layers.layer(l);
+        const Layer        &layer = layers.layer(l);
         std::vector<double> h(layer.n_cells_across);
         double              sum = 0;
         for (unsigned int k = 0; k < h.size(); ++k)
@@ -211,10 +211,9 @@ namespace ssc
       /*colorize=*/true);
 
     for (const auto &cell : coarse.active_cell_iterators())
-      cell->set_material_id(
-        std::min<unsigned int>(n_layers - 1,
-                               static_cast<unsigned int>(
-                                 std::floor(-cell->center()[2]))));
+      cell->set_material_id(std::min<unsigned int>(
+        n_layers - 1,
+        static_cast<unsigned int>(std::floor(-cell->center()[2]))));
 
     const LayerManifold layer_map(
       layers, DiskFittingMap(parameters.fitted_circle_radius));

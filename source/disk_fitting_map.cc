@@ -1,7 +1,7 @@
+#include <ssc/disk_fitting_map.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <ssc/disk_fitting_map.h>
 
 namespace ssc
 {
@@ -39,7 +39,7 @@ namespace ssc
     double lo = a / c, hi = 2 * a / c;
     for (unsigned int i = 0; i < 100 && hi - lo > 1e-15 * hi; ++i)
       {
-        const double mid = 0.5 * (lo + hi);
+        const double mid                      = 0.5 * (lo + hi);
         (mid * stretch(mid, c) < R ? lo : hi) = mid;
       }
     const double rho = 0.5 * (lo + hi);

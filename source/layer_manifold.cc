@@ -5,7 +5,7 @@
 
 namespace ssc
 {
-  LayerManifold::LayerManifold(const LayerStack &    layers,
+  LayerManifold::LayerManifold(const LayerStack     &layers,
                                const DiskFittingMap &disk_map)
     : layers(layers)
     , disk_map(disk_map)
@@ -48,9 +48,7 @@ namespace ssc
         if (depth <= top + t || i == n - 1)
           {
             const Point<2> chart_xy = disk_map.inverse(Point<2>(x, y));
-            return Point<3>(chart_xy[0],
-                            chart_xy[1],
-                            -(i + (depth - top) / t));
+            return Point<3>(chart_xy[0], chart_xy[1], -(i + (depth - top) / t));
           }
         top += t;
       }

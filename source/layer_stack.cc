@@ -1,10 +1,10 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <ssc/layer_stack.h>
+
 #include <set>
 #include <sstream>
-
-#include <ssc/layer_stack.h>
 
 namespace ssc
 {
@@ -34,21 +34,21 @@ namespace ssc
     /// a kind (Herlin et al. 2014 moduli, typical forearm thicknesses).
     struct LayerDefaults
     {
-      const char *kind, *thickness, *modulus, *cells;
+      const char *kind, *thickness, *modulus, *cells, *lobule_diameter;
     };
 
     LayerDefaults
     defaults_for(const std::string &name)
     {
       if (name == "skin")
-        return {"skin", "1.5", "0.02", "1"};
+        return {"skin", "1.5", "0.02", "1", "0"};
       if (name == "SM")
-        return {"SM", "0.5", "0.06", "1"};
+        return {"SM", "0.5", "0.06", "1", "0"};
       if (name == "DAT")
-        return {"DAT", "3", "0.001", "2"};
+        return {"DAT", "3", "0.001", "2", "8"};
       if (name == "deep")
-        return {"deep", "10", "0.015", "3"};
-      return {"SAT", "3", "0.001", "2"};
+        return {"deep", "10", "0.015", "3", "0"};
+      return {"SAT", "3", "0.001", "2", "4"};
     }
   } // namespace
 
@@ -77,6 +77,21 @@ namespace ssc
   Layer::thickness(const double x, const double y) const
   {
     return thickness_function->value(Point<2>(x, y));
+  }
+
+
+  bool
+  Layer::has_constant_thickness() const
+  {
+    try
+      {
+        Utilities::string_to_double(thickness_expression);
+        return true;
+      }
+    catch (...)
+      {
+        return false;
+      }
   }
 
 
@@ -128,7 +143,7 @@ namespace ssc
 
 
   void
-  LayerStack::declare_parameters(ParameterHandler &              prm,
+  LayerStack::declare_parameters(ParameterHandler               &prm,
                                  const std::vector<std::string> &layer_names)
   {
     declare_layer_list(prm);
@@ -169,6 +184,21 @@ namespace ssc
                           "Number of background cells across the thickness of "
                           "this layer on the coarsest mesh (before global "
                           "refinement).");
+        prm.declare_entry(
+          "Lobule diameter",
+          d.lobule_diameter,
+          Patterns::Double(0),
+          "Mean diameter (mm) of the fat lobules of an SAT or DAT layer: the "
+          "number of lobules is the layer volume over the volume of the "
+          "sphere of this diameter. Used when Microstructure/Lobules is on "
+          "and the kind is SAT or DAT (ignored otherwise); 0: no lobules in "
+          "this layer.");
+        prm.declare_entry("Lobule vertical stretch",
+                          "1",
+                          Patterns::Double(0.1, 10),
+                          "Height-to-width ratio of the lobules: > 1 gives "
+                          "the vertically elongated, palisade-like lobules of "
+                          "the SAT, < 1 the flat lobules of the DAT.");
         prm.declare_entry("Grading",
                           "1",
                           Patterns::Double(0.1, 10),
@@ -202,10 +232,10 @@ namespace ssc
         const std::string path = "Layer stack/" + name + "/";
         const double      nu   = prm.get_double("Poisson's ratio");
         AssertThrow(nu > -1. && nu < 0.5,
-                    ExcMessage(path + "Poisson's ratio = " +
-                               prm.get("Poisson's ratio") +
-                               " is outside (-1, 0.5): nu = 0.5 is exactly "
-                               "incompressible and not supported; use 0.4999."));
+                    ExcMessage(
+                      path + "Poisson's ratio = " + prm.get("Poisson's ratio") +
+                      " is outside (-1, 0.5): nu = 0.5 is exactly "
+                      "incompressible and not supported; use 0.4999."));
         const double E = prm.get_double("Young's modulus");
         AssertThrow(E > 0.,
                     ExcMessage(path +
@@ -216,7 +246,9 @@ namespace ssc
                   E,
                   nu,
                   prm.get_integer("Cells across"),
-                  prm.get_double("Grading"));
+                  prm.get_double("Grading"),
+                  prm.get_double("Lobule diameter"),
+                  prm.get_double("Lobule vertical stretch"));
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -230,7 +262,9 @@ namespace ssc
                         const double       E,
                         const double       nu,
                         const unsigned int n_cells_across,
-                        const double       grading)
+                        const double       grading,
+                        const double       lobule_diameter,
+                        const double       lobule_stretch)
   {
     Layer layer;
     layer.name                 = name;
@@ -240,6 +274,8 @@ namespace ssc
     layer.poisson_ratio        = nu;
     layer.n_cells_across       = n_cells_across;
     layer.grading              = grading;
+    layer.lobule_diameter      = lobule_diameter;
+    layer.lobule_stretch       = lobule_stretch;
     layer.thickness_function   = std::make_shared<FunctionParser<2>>(1);
     try
       {

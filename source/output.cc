@@ -2,11 +2,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.templates.h>
 
+#include <ssc/output.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-
-#include <ssc/output.h>
 
 namespace ssc
 {
@@ -66,15 +66,14 @@ namespace ssc
             std::filesystem::remove(path("summary.json"), error);
             log_file.open(path("log.txt"));
             if (!log_file)
-              problem =
-                "Cannot write into the output folder '" + folder + "'.";
+              problem = "Cannot write into the output folder '" + folder + "'.";
           }
       }
     problem = Utilities::MPI::broadcast(mpi_communicator, problem, 0);
     AssertThrow(problem.empty(), ExcMessage(problem));
-    tee_buffer = std::make_unique<TeeBuffer>(
-      print_to_stdout ? std::cout.rdbuf() : nullptr,
-      is_root ? log_file.rdbuf() : nullptr);
+    tee_buffer =
+      std::make_unique<TeeBuffer>(print_to_stdout ? std::cout.rdbuf() : nullptr,
+                                  is_root ? log_file.rdbuf() : nullptr);
     tee_stream = std::make_unique<std::ostream>(tee_buffer.get());
     pcout      = std::make_unique<ConditionalOStream>(*tee_stream, is_root);
   }

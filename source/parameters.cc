@@ -1,10 +1,12 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <filesystem>
-#include <sstream>
-
+#include <ssc/microstructure/ligaments.h>
 #include <ssc/parameters.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 namespace ssc
 {
@@ -14,10 +16,12 @@ namespace ssc
     prm.enter_subsection("Run");
     prm.declare_entry("Scene",
                       "punch",
-                      Patterns::Selection("punch"),
+                      Patterns::Selection("punch|geometry"),
                       "What to simulate. punch: a rigid flat cylindrical "
                       "punch pressed to a prescribed depth at the patch "
-                      "centre (linear elasticity).");
+                      "centre (linear elasticity). geometry: build the "
+                      "layered patch and its microstructure (lobules, septa, "
+                      "ligaments) and write them, without mechanics.");
     prm.declare_entry("Name",
                       "punch",
                       Patterns::Anything(),
@@ -94,10 +98,72 @@ namespace ssc
         }
       for (unsigned int d = 0; d < depth; ++d)
         prm.leave_subsection();
-      AssertThrow(problem.empty(),
-                  ExcMessage("-s '" + text + "': " + problem));
+      AssertThrow(problem.empty(), ExcMessage("-s '" + text + "': " + problem));
     }
   } // namespace
+
+
+  void
+  parse_with_includes(ParameterHandler  &prm,
+                      const std::string &file,
+                      const bool         skip_undefined,
+                      const unsigned int depth)
+  {
+    AssertThrow(depth < 16,
+                ExcMessage("'include' statements nested more than 16 deep "
+                           "(does " +
+                           file + " include itself?)."));
+    std::ifstream input(file);
+    AssertThrow(input,
+                ExcMessage("Cannot open the parameter file '" + file + "'."));
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(input, line);)
+      lines.push_back(line);
+
+    // Split at the include lines; each piece is parsed with every other line
+    // blanked, so that deal.II's messages keep this file's line numbers.
+    const auto parse_piece = [&](const unsigned int begin,
+                                 const unsigned int end) {
+      std::ostringstream piece;
+      for (unsigned int i = 0; i < lines.size(); ++i)
+        piece << (i >= begin && i < end ? lines[i] : std::string()) << '\n';
+      std::istringstream stream(piece.str());
+      prm.parse_input(stream, file, "", skip_undefined);
+    };
+    int          level = 0;
+    unsigned int begin = 0;
+    for (unsigned int i = 0; i < lines.size(); ++i)
+      {
+        std::string first;
+        std::istringstream(lines[i]) >> first;
+        if (first == "subsection")
+          ++level;
+        else if (first == "end")
+          --level;
+        else if (first == "include" || first == "INCLUDE")
+          {
+            AssertThrow(level == 0,
+                        ExcMessage(file + ", line " + std::to_string(i + 1) +
+                                   ": 'include' is allowed only outside "
+                                   "subsections."));
+            parse_piece(begin, i);
+            begin = i + 1;
+            std::filesystem::path included(
+              Utilities::trim(Utilities::trim(lines[i]).substr(first.size())));
+            if (included.is_relative())
+              included = std::filesystem::path(file).parent_path() / included;
+            AssertThrow(std::filesystem::is_regular_file(included),
+                        ExcMessage(file + ", line " + std::to_string(i + 1) +
+                                   ": cannot open the included file '" +
+                                   included.string() + "'."));
+            parse_with_includes(prm,
+                                included.string(),
+                                skip_undefined,
+                                depth + 1);
+          }
+      }
+    parse_piece(begin, lines.size());
+  }
 
 
   void
@@ -108,11 +174,12 @@ namespace ssc
     MeshParameters::declare_parameters(prm);
     ElasticityParameters::declare_parameters(prm);
     PunchParameters::declare_parameters(prm);
+    MicrostructureParameters::declare_parameters(prm);
   }
 
 
   void
-  Parameters::read(const std::string &             file,
+  Parameters::read(const std::string              &file,
                    const std::vector<std::string> &overrides)
   {
     if (!file.empty())
@@ -124,7 +191,7 @@ namespace ssc
     ParameterHandler first;
     declare(first, {});
     if (!file.empty())
-      first.parse_input(file, "", /*skip_undefined=*/true);
+      parse_with_includes(first, file, /*skip_undefined=*/true);
     for (const auto &o : overrides)
       try
         {
@@ -140,7 +207,7 @@ namespace ssc
     prm.clear();
     declare(prm, names);
     if (!file.empty())
-      prm.parse_input(file);
+      parse_with_includes(prm, file, /*skip_undefined=*/false);
     for (const auto &o : overrides)
       apply_override(prm, o);
 
@@ -149,6 +216,7 @@ namespace ssc
     mesh.parse_parameters(prm);
     elasticity.parse_parameters(prm);
     punch.parse_parameters(prm);
+    microstructure.parse_parameters(prm);
     check_consistency();
   }
 
@@ -157,6 +225,27 @@ namespace ssc
   Parameters::check_consistency() const
   {
     layers.check_thickness_positive(mesh.patch_length_x, mesh.patch_length_y);
+    if (microstructure.lobules || microstructure.ligaments)
+      {
+        // throws unless the region overlaps the patch
+        const BoundingBox<2> rectangle =
+          microstructure.region.bounding_rectangle(mesh.patch_length_x,
+                                                   mesh.patch_length_y);
+        if (microstructure.lobules)
+          {
+            bool any = false;
+            for (unsigned int l = 0; l < layers.n_layers(); ++l)
+              any = any || (layers.layer(l).is_adipose() &&
+                            layers.layer(l).lobule_diameter > 0);
+            AssertThrow(any,
+                        ExcMessage("Microstructure/Lobules is on, but no "
+                                   "layer of kind SAT or DAT has a positive "
+                                   "Lobule diameter."));
+          }
+        // checks the target layer and the density over the region
+        if (microstructure.ligaments)
+          place_ligaments(layers, rectangle, microstructure);
+      }
     if (run.scene == "punch")
       {
         const double smallest =

@@ -1,11 +1,11 @@
 // Bad input never crashes: each case gives exit status 1 and one message
 // that names the parameter (and file and line where the parser knows them).
 
+#include <ssc/application.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <ssc/application.h>
 
 #include "tests.h"
 
@@ -24,8 +24,8 @@ end
 )";
 
   void
-  check(const std::string &             label,
-        const std::string &             prm_text,
+  check(const std::string              &label,
+        const std::string              &prm_text,
         const std::vector<std::string> &extra_arguments = {})
   {
     const std::string file = "case.prm";
@@ -95,14 +95,32 @@ main(int argc, char **argv)
   check("punch wider than the patch",
         std::string(valid_stack) +
           "subsection Punch\n  set Radius = 25\nend\n");
-  check("unknown -s parameter",
-        valid_stack,
-        {"-s", "Mesh/Cell sise=1"});
-  check("-s value out of range",
-        valid_stack,
-        {"-s", "Elasticity/Degree=7"});
+  check("unknown -s parameter", valid_stack, {"-s", "Mesh/Cell sise=1"});
+  check("-s value out of range", valid_stack, {"-s", "Elasticity/Degree=7"});
   check("-s without '='", valid_stack, {"-s", "Mesh/Cell size"});
   check("unknown option", valid_stack, {"--fast"});
-  check("empty run name", std::string(valid_stack) +
-                            "subsection Run\n  set Name = \nend\n");
+  check("empty run name",
+        std::string(valid_stack) + "subsection Run\n  set Name = \nend\n");
+
+  const std::string geometry =
+    "subsection Run\n  set Scene = geometry\nend\n"
+    "subsection Layer stack\n  set Layers = skin, SAT, deep\n"
+    "  subsection SAT\n    set Lobule diameter = 0\n  end\nend\n";
+  check("lobules but no lobule diameter",
+        geometry + "subsection Microstructure\n  set Lobules = true\nend\n");
+  check("region of interest outside the patch",
+        geometry + "subsection Microstructure\n  set Ligaments = true\n"
+                   "  subsection Region of interest\n    set Shape = box\n"
+                   "    set Centre x = 100\n  end\nend\n");
+  check("ligament target missing",
+        geometry + "subsection Microstructure\n  set Ligaments = true\n"
+                   "  subsection Ligaments\n    set Target = SM\n  end\n"
+                   "end\n");
+  check("negative ligament density",
+        geometry + "subsection Microstructure\n  set Ligaments = true\n"
+                   "  subsection Ligaments\n    set Target = deep\n"
+                   "    set Density = 1 - 0.1*x\n  end\nend\n");
+  check("missing include", "include no_such_region.prm\n");
+  check("include inside a subsection",
+        "subsection Mesh\n  include other.prm\nend\n");
 }

@@ -1,9 +1,9 @@
 // DiskFittingMap: the square |p|_inf = a goes onto the circle r = a, points
 // beyond 2a stay put, and inverse(forward(p)) = p everywhere.
 
-#include <cmath>
-
 #include <ssc/disk_fitting_map.h>
+
+#include <cmath>
 
 #include "tests.h"
 
@@ -19,9 +19,10 @@ main(int argc, char **argv)
   for (unsigned int i = 0; i <= 200; ++i)
     {
       const double s = -a + 2 * a * i / 200.;
-      for (const dealii::Point<2> &p :
-           {dealii::Point<2>(s, a), dealii::Point<2>(a, s),
-            dealii::Point<2>(s, -a), dealii::Point<2>(-a, s)})
+      for (const dealii::Point<2> &p : {dealii::Point<2>(s, a),
+                                        dealii::Point<2>(a, s),
+                                        dealii::Point<2>(s, -a),
+                                        dealii::Point<2>(-a, s)})
         square_to_circle =
           std::max(square_to_circle, std::abs(map.forward(p).norm() - a));
       const dealii::Point<2> far(3 * s, 2.01 * a);

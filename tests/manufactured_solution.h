@@ -13,11 +13,11 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/tensor.h>
 
+#include <ssc/layer_stack.h>
+
 #include <cmath>
 #include <memory>
 #include <vector>
-
-#include <ssc/layer_stack.h>
 
 namespace ssc_test
 {
@@ -73,8 +73,8 @@ namespace ssc_test
               r.gradient[i][j] = dqj * S + q * k[j] * C;
               for (unsigned int l = 0; l < 3; ++l)
                 {
-                  const double dql  = (l == 2 ? dq : 0.);
-                  const double ddqj = (j == 2 && l == 2 ? ddq : 0.);
+                  const double dql   = (l == 2 ? dq : 0.);
+                  const double ddqj  = (j == 2 && l == 2 ? ddq : 0.);
                   r.hessian[i][j][l] = ddqj * S + dqj * k[l] * C +
                                        dql * k[j] * C - q * k[j] * k[l] * S;
                 }
@@ -105,12 +105,12 @@ namespace ssc_test
         return d(nx, p[0]) * d(ny, p[1]) * d(nz, p[2]);
       };
       // u_0 = psi_(0,1,0), u_1 = -psi_(1,0,0): multi-index of each
-      const int base[2][3] = {{0, 1, 0}, {1, 0, 0}};
-      const double sign[2] = {1., -1.};
+      const int    base[2][3] = {{0, 1, 0}, {1, 0, 0}};
+      const double sign[2]    = {1., -1.};
       Jet          r;
       for (unsigned int i = 0; i < 2; ++i)
         {
-          int n[3] = {base[i][0], base[i][1], base[i][2]};
+          int n[3]   = {base[i][0], base[i][1], base[i][2]};
           r.value[i] = sign[i] * psi(n[0], n[1], n[2]);
           for (unsigned int j = 0; j < 3; ++j)
             {
@@ -134,7 +134,7 @@ namespace ssc_test
   {
   public:
     ExactDisplacement(std::shared_ptr<const SmoothField> field,
-                      const ssc::LayerStack &            layers)
+                      const ssc::LayerStack             &layers)
       : Function<3>(3)
       , field(field)
       , layers(layers)
@@ -160,7 +160,7 @@ namespace ssc_test
     }
 
     std::shared_ptr<const SmoothField> field;
-    const ssc::LayerStack &            layers;
+    const ssc::LayerStack             &layers;
   };
 
   /// f = -div sigma_1(v) for Poisson's ratio nu (E = 1).

@@ -18,15 +18,35 @@ main(int argc, char **argv)
   three_layers.add_layer("skin", ssc::LayerKind::skin, "1/3", 20., 0.3, 1);
   three_layers.add_layer("fat", ssc::LayerKind::SAT, "1/3", 1., 0.3, 1);
   three_layers.add_layer("muscle", ssc::LayerKind::deep, "1/3", 5., 0.3, 1);
-  auto layered = std::make_shared<LayeredTrigField>(
-    std::vector<double>{-1. / 3, -2. / 3});
+  auto layered =
+    std::make_shared<LayeredTrigField>(std::vector<double>{-1. / 3, -2. / 3});
 
-  convergence_study("one layer, Q1", one_layer, plain, 0.3, 1,
-                    ssc::Formulation::displacement, 5);
-  convergence_study("one layer, Q2", one_layer, plain, 0.3, 2,
-                    ssc::Formulation::displacement, 4);
-  convergence_study("three layers 20:1:5, Q1", three_layers, layered, 0.3, 1,
-                    ssc::Formulation::displacement, 4);
-  convergence_study("three layers 20:1:5, Q2", three_layers, layered, 0.3, 2,
-                    ssc::Formulation::displacement, 3);
+  convergence_study("one layer, Q1",
+                    one_layer,
+                    plain,
+                    0.3,
+                    1,
+                    ssc::Formulation::displacement,
+                    5);
+  convergence_study("one layer, Q2",
+                    one_layer,
+                    plain,
+                    0.3,
+                    2,
+                    ssc::Formulation::displacement,
+                    4);
+  convergence_study("three layers 20:1:5, Q1",
+                    three_layers,
+                    layered,
+                    0.3,
+                    1,
+                    ssc::Formulation::displacement,
+                    4);
+  convergence_study("three layers 20:1:5, Q2",
+                    three_layers,
+                    layered,
+                    0.3,
+                    2,
+                    ssc::Formulation::displacement,
+                    3);
 }

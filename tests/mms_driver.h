@@ -9,12 +9,12 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <ssc/background_mesh.h>
+#include <ssc/mechanics/volume_elasticity.h>
+
 #include <cmath>
 #include <iomanip>
 #include <iostream>
-
-#include <ssc/background_mesh.h>
-#include <ssc/mechanics/volume_elasticity.h>
 
 #include "manufactured_solution.h"
 #include "tests.h"
@@ -22,8 +22,8 @@
 namespace ssc_test
 {
   inline void
-  convergence_study(const std::string &                label,
-                    const ssc::LayerStack &            layers,
+  convergence_study(const std::string                 &label,
+                    const ssc::LayerStack             &layers,
                     std::shared_ptr<const SmoothField> field,
                     const double                       nu,
                     const unsigned int                 degree,
@@ -46,15 +46,15 @@ namespace ssc_test
         mesh.build();
 
         ssc::ElasticityParameters parameters;
-        parameters.degree      = degree;
-        parameters.formulation = formulation;
-        parameters.tolerance   = 1e-12;
+        parameters.degree         = degree;
+        parameters.formulation    = formulation;
+        parameters.tolerance      = 1e-12;
         parameters.max_iterations = 5000;
-        TimerOutput        timer(MPI_COMM_WORLD,
+        TimerOutput           timer(MPI_COMM_WORLD,
                           std::cout,
                           TimerOutput::never,
                           TimerOutput::wall_times);
-        ConditionalOStream pcout(std::cout, false);
+        ConditionalOStream    pcout(std::cout, false);
         ssc::VolumeElasticity elasticity(
           mesh, layers, parameters, timer, pcout);
         elasticity.setup_dofs();

@@ -16,10 +16,25 @@ main(int argc, char **argv)
   block.add_layer("block", ssc::LayerKind::deep, "1", 1., 0.4999, 2);
   auto field = std::make_shared<DivergenceFreeField>();
 
-  convergence_study("nu = 0.4999, Q1 displacement (locks)", block, field,
-                    0.4999, 1, ssc::Formulation::displacement, 4);
-  convergence_study("nu = 0.4999, Q1 mixed", block, field, 0.4999, 1,
-                    ssc::Formulation::mixed, 4);
-  convergence_study("nu = 0.4999, Q2 mixed", block, field, 0.4999, 2,
-                    ssc::Formulation::mixed, 3);
+  convergence_study("nu = 0.4999, Q1 displacement (locks)",
+                    block,
+                    field,
+                    0.4999,
+                    1,
+                    ssc::Formulation::displacement,
+                    4);
+  convergence_study("nu = 0.4999, Q1 mixed",
+                    block,
+                    field,
+                    0.4999,
+                    1,
+                    ssc::Formulation::mixed,
+                    4);
+  convergence_study("nu = 0.4999, Q2 mixed",
+                    block,
+                    field,
+                    0.4999,
+                    2,
+                    ssc::Formulation::mixed,
+                    3);
 }

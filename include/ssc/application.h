@@ -21,8 +21,8 @@ namespace ssc
   int
   run_command_line(const std::vector<std::string> &arguments,
                    const MPI_Comm                  mpi_communicator,
-                   std::ostream &                  out,
-                   std::ostream &                  err);
+                   std::ostream                   &out,
+                   std::ostream                   &err);
 } // namespace ssc
 
 #endif

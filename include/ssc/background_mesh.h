@@ -5,11 +5,11 @@
 
 #include <deal.II/distributed/tria.h>
 
-#include <memory>
-#include <vector>
-
 #include <ssc/layer_manifold.h>
 #include <ssc/layer_stack.h>
+
+#include <memory>
+#include <vector>
 
 namespace ssc
 {
@@ -27,11 +27,11 @@ namespace ssc
    */
   struct MeshParameters
   {
-    double patch_length_x      = 40;
-    double patch_length_y      = 40;
-    double cell_size           = 2;
-    double core_half_width     = 10;
-    double grading_ratio       = 1;
+    double       patch_length_x     = 40;
+    double       patch_length_y     = 40;
+    double       cell_size          = 2;
+    double       core_half_width    = 10;
+    double       grading_ratio      = 1;
     unsigned int global_refinements = 0;
     /// Radius of the circle around the centre that mesh lines follow
     /// (0: none); see DiskFittingMap.
@@ -59,7 +59,7 @@ namespace ssc
   class BackgroundMesh
   {
   public:
-    BackgroundMesh(const LayerStack &    layers,
+    BackgroundMesh(const LayerStack     &layers,
                    const MeshParameters &parameters,
                    const MPI_Comm        mpi_communicator);
 
@@ -95,8 +95,8 @@ namespace ssc
     void
     check_fitted_circle() const;
 
-    const LayerStack &                      layers;
-    const MeshParameters &                  parameters;
+    const LayerStack                       &layers;
+    const MeshParameters                   &parameters;
     parallel::distributed::Triangulation<3> tria;
   };
 } // namespace ssc

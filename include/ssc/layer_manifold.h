@@ -24,7 +24,7 @@ namespace ssc
   class LayerManifold : public ChartManifold<3, 3, 3>
   {
   public:
-    LayerManifold(const LayerStack &    layers,
+    LayerManifold(const LayerStack     &layers,
                   const DiskFittingMap &disk_map = DiskFittingMap());
 
     std::unique_ptr<Manifold<3, 3>>
@@ -37,7 +37,7 @@ namespace ssc
     push_forward(const Point<3> &chart_point) const override;
 
   private:
-    const LayerStack &   layers;
+    const LayerStack    &layers;
     const DiskFittingMap disk_map;
   };
 } // namespace ssc

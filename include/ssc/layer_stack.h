@@ -34,14 +34,31 @@ namespace ssc
    */
   struct Layer
   {
-    std::string name;
-    LayerKind   kind;
-    std::string thickness_expression;
-    double      youngs_modulus; ///< MPa
-    double      poisson_ratio;
+    std::string  name;
+    LayerKind    kind;
+    std::string  thickness_expression;
+    double       youngs_modulus; ///< MPa
+    double       poisson_ratio;
     unsigned int n_cells_across;
     /// Ratio of successive cell heights from the top of the layer down.
     double grading;
+    /// Mean diameter (mm) of the fat lobules of an SAT or DAT layer (0:
+    /// none); the lobule count is the layer volume over the volume of the
+    /// sphere of this diameter.
+    double lobule_diameter = 0;
+    /// Height-to-width ratio of the lobules (> 1: palisade-like SAT).
+    double lobule_stretch = 1;
+
+    /// Whether this layer can carry lobules (kind SAT or DAT).
+    bool
+    is_adipose() const
+    {
+      return kind == LayerKind::SAT || kind == LayerKind::DAT;
+    }
+
+    /// Whether the thickness is a plain number (not a function of x, y).
+    bool
+    has_constant_thickness() const;
 
     /// Thickness at (x, y), mm.
     double
@@ -80,7 +97,7 @@ namespace ssc
 
     /// Declares the list and one subsection per name (second pass).
     static void
-    declare_parameters(ParameterHandler &               prm,
+    declare_parameters(ParameterHandler               &prm,
                        const std::vector<std::string> &layer_names);
 
     /// Reads and validates the layers; throws with a clear message.
@@ -125,7 +142,9 @@ namespace ssc
               const double       E,
               const double       nu,
               const unsigned int n_cells_across,
-              const double       grading = 1.0);
+              const double       grading         = 1.0,
+              const double       lobule_diameter = 0.,
+              const double       lobule_stretch  = 1.);
 
   private:
     std::vector<Layer> layers;

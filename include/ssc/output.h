@@ -70,10 +70,10 @@ namespace ssc
     bool        is_root;
 
     class TeeBuffer;
-    std::ofstream                                          log_file;
-    std::unique_ptr<TeeBuffer>                             tee_buffer;
-    std::unique_ptr<std::ostream>                          tee_stream;
-    std::unique_ptr<ConditionalOStream>                    pcout;
+    std::ofstream                       log_file;
+    std::unique_ptr<TeeBuffer>          tee_buffer;
+    std::unique_ptr<std::ostream>       tee_stream;
+    std::unique_ptr<ConditionalOStream> pcout;
     std::map<std::string, std::vector<std::pair<double, std::string>>>
       pvd_records;
   };

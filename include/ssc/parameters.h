@@ -3,16 +3,29 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <string>
-#include <vector>
-
 #include <ssc/background_mesh.h>
 #include <ssc/layer_stack.h>
 #include <ssc/mechanics/elasticity_parameters.h>
+#include <ssc/microstructure/microstructure_parameters.h>
 #include <ssc/scenes/punch_parameters.h>
+
+#include <string>
+#include <vector>
 
 namespace ssc
 {
+  /**
+   * Parses @p file into @p prm. A line 'include OTHER.prm' (outside any
+   * subsection) parses OTHER.prm at that point, relative to the folder of
+   * the file that includes it, so that region files (prm/regions/) can be
+   * shared by the scene files of that region; later lines override.
+   */
+  void
+  parse_with_includes(ParameterHandler  &prm,
+                      const std::string &file,
+                      const bool         skip_undefined,
+                      const unsigned int depth = 0);
+
   /// Section "Run": which scene, where its results go.
   struct RunParameters
   {
@@ -40,8 +53,7 @@ namespace ssc
     /// Reads @p file (if not empty) and applies @p overrides; throws
     /// ExcMessage naming the parameter (and file and line) on bad input.
     void
-    read(const std::string &             file,
-         const std::vector<std::string> &overrides);
+    read(const std::string &file, const std::vector<std::string> &overrides);
 
     /// Prints every parameter with default and documentation.
     static void
@@ -51,11 +63,12 @@ namespace ssc
     void
     print_used(std::ostream &out) const;
 
-    RunParameters        run;
-    LayerStack           layers;
-    MeshParameters       mesh;
-    ElasticityParameters elasticity;
-    PunchParameters      punch;
+    RunParameters            run;
+    LayerStack               layers;
+    MeshParameters           mesh;
+    ElasticityParameters     elasticity;
+    PunchParameters          punch;
+    MicrostructureParameters microstructure;
 
   private:
     static void

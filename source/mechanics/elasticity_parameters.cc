@@ -70,9 +70,9 @@ namespace ssc
     formulation = prm.get("Formulation") == "mixed" ? Formulation::mixed :
                                                       Formulation::displacement;
     const std::string s = prm.get("Sides");
-    sides = s == "free"   ? SideCondition::free :
-            s == "fixed"  ? SideCondition::fixed :
-                            SideCondition::roller;
+    sides               = s == "free"  ? SideCondition::free :
+                          s == "fixed" ? SideCondition::fixed :
+                                         SideCondition::roller;
     prm.enter_subsection("Linear solver");
     tolerance             = prm.get_double("Tolerance");
     max_iterations        = prm.get_integer("Max iterations");

@@ -16,17 +16,16 @@
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
-
 #include <ssc/mechanics/linear_elastic_material.h>
 #include <ssc/mechanics/volume_elasticity.h>
 
 namespace ssc
 {
-  VolumeElasticity::VolumeElasticity(BackgroundMesh &            mesh,
-                                     const LayerStack &          layers,
+  VolumeElasticity::VolumeElasticity(BackgroundMesh             &mesh,
+                                     const LayerStack           &layers,
                                      const ElasticityParameters &parameters,
-                                     TimerOutput &               timer,
-                                     ConditionalOStream &        pcout)
+                                     TimerOutput                &timer,
+                                     ConditionalOStream         &pcout)
     : mesh(mesh)
     , layers(layers)
     , parameters(parameters)
@@ -123,12 +122,12 @@ namespace ssc
                                                locally_owned_dofs,
                                                locally_relevant_dofs,
                                                mpi_communicator);
-    DoFTools::make_sparsity_pattern(
-      dof_handler,
-      sparsity,
-      constraints,
-      false,
-      Utilities::MPI::this_mpi_process(mpi_communicator));
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    sparsity,
+                                    constraints,
+                                    false,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
     sparsity.compress();
     system_matrix.reinit(sparsity);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
@@ -138,17 +137,17 @@ namespace ssc
   void
   VolumeElasticity::assemble_cell(
     const typename DoFHandler<3>::active_cell_iterator &cell,
-    FEValues<3> &                                       fe_values,
-    const Function<3> *                                 body_force,
-    FullMatrix<double> &                                cell_matrix,
-    Vector<double> &                                    cell_rhs) const
+    FEValues<3>                                        &fe_values,
+    const Function<3>                                  *body_force,
+    FullMatrix<double>                                 &cell_matrix,
+    Vector<double>                                     &cell_rhs) const
   {
     fe_values.reinit(cell);
-    const Layer &layer = layers.layer(cell->material_id());
-    const LinearElasticMaterial material(layer.youngs_modulus,
+    const Layer                     &layer = layers.layer(cell->material_id());
+    const LinearElasticMaterial      material(layer.youngs_modulus,
                                          layer.poisson_ratio);
-    const unsigned int n_dofs = fe.n_dofs_per_cell();
-    const unsigned int n_q    = fe_values.n_quadrature_points;
+    const unsigned int               n_dofs = fe.n_dofs_per_cell();
+    const unsigned int               n_q    = fe_values.n_quadrature_points;
     const FEValuesExtractors::Vector displacement(0);
     const bool mixed = parameters.formulation == Formulation::mixed;
 
@@ -157,10 +156,10 @@ namespace ssc
 
     // Projection space of the volumetric strain (mixed): P_{p-1} on the
     // cell, centred and scaled for conditioning.
-    const unsigned int n_p       = (parameters.degree == 1 ? 1 : 4);
-    const Point<3>     centre    = cell->center();
-    const double       scale     = 1. / cell->diameter();
-    FullMatrix<double> mass(n_p, n_p), coupling(n_p, n_dofs);
+    const unsigned int  n_p    = (parameters.degree == 1 ? 1 : 4);
+    const Point<3>      centre = cell->center();
+    const double        scale  = 1. / cell->diameter();
+    FullMatrix<double>  mass(n_p, n_p), coupling(n_p, n_dofs);
     std::vector<double> q_basis(n_p);
 
     std::vector<SymmetricTensor<2, 3>> eps(n_dofs);
@@ -178,10 +177,9 @@ namespace ssc
         const double lambda_q = mixed ? 0. : material.lambda;
         for (unsigned int i = 0; i < n_dofs; ++i)
           for (unsigned int j = 0; j <= i; ++j)
-            cell_matrix(i, j) +=
-              (2. * material.mu * (eps[i] * eps[j]) +
-               lambda_q * div[i] * div[j]) *
-              JxW;
+            cell_matrix(i, j) += (2. * material.mu * (eps[i] * eps[j]) +
+                                  lambda_q * div[i] * div[j]) *
+                                 JxW;
 
         if (body_force != nullptr)
           {
@@ -232,7 +230,7 @@ namespace ssc
     system_matrix = 0;
     system_rhs    = 0;
 
-    FEValues<3> fe_values(mapping, fe, cell_quadrature, assembly_flags);
+    FEValues<3>        fe_values(mapping, fe, cell_quadrature, assembly_flags);
     FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
     Vector<double>     cell_rhs(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -295,7 +293,7 @@ namespace ssc
     unsigned int local = 0;
     for (const auto dof : locally_owned_dofs)
       {
-        const Point<3> &   x = support_points.at(dof);
+        const Point<3>    &x = support_points.at(dof);
         const unsigned int c =
           component[locally_relevant_dofs.index_within_set(dof)];
         for (unsigned int m = 0; m < 3; ++m)
@@ -381,7 +379,7 @@ namespace ssc
                                          mpi_communicator);
     weight = unit;
 
-    FEValues<3> fe_values(mapping, fe, cell_quadrature, assembly_flags);
+    FEValues<3>        fe_values(mapping, fe, cell_quadrature, assembly_flags);
     const unsigned int n = fe.n_dofs_per_cell();
     FullMatrix<double> cell_matrix(n, n);
     Vector<double>     cell_rhs(n), cell_u(n), cell_r(n), cell_w(n);
@@ -465,20 +463,20 @@ namespace ssc
                               const std::string &basename,
                               const unsigned int step) const
   {
-    const auto &tria = mesh.triangulation();
+    const auto                &tria = mesh.triangulation();
     std::vector<Vector<float>> stress(6, Vector<float>(tria.n_active_cells()));
     Vector<float> mises(tria.n_active_cells()), layer(tria.n_active_cells()),
       subdomain(tria.n_active_cells());
 
-    const QGauss<3> quadrature(parameters.degree + 1);
-    FEValues<3>     fe_values(mapping,
+    const QGauss<3>                    quadrature(parameters.degree + 1);
+    FEValues<3>                        fe_values(mapping,
                           fe,
                           quadrature,
                           update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector       displacement(0);
-    std::vector<SymmetricTensor<2, 3>>     eps(quadrature.size());
-    static constexpr unsigned int          index[6][2] = {
-      {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+    const FEValuesExtractors::Vector   displacement(0);
+    std::vector<SymmetricTensor<2, 3>> eps(quadrature.size());
+    static constexpr unsigned int      index[6][2] = {
+           {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -518,9 +516,12 @@ namespace ssc
                              names,
                              DataOut<3>::type_dof_data,
                              interpretation);
-    const char *stress_names[6] = {
-      "stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz",
-      "stress_xz"};
+    const char *stress_names[6] = {"stress_xx",
+                                   "stress_yy",
+                                   "stress_zz",
+                                   "stress_xy",
+                                   "stress_yz",
+                                   "stress_xz"};
     for (unsigned int c = 0; c < 6; ++c)
       data_out.add_data_vector(stress[c], stress_names[c]);
     data_out.add_data_vector(mises, "von_mises");

@@ -42,7 +42,6 @@ namespace ssc
                    PunchContact::bonded;
     load_steps = prm.get_integer("Load steps");
     prm.leave_subsection();
-    AssertThrow(radius > 0,
-                ExcMessage("Punch/Radius must be positive (mm)."));
+    AssertThrow(radius > 0, ExcMessage("Punch/Radius must be positive (mm)."));
   }
 } // namespace ssc

@@ -1,15 +1,15 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
 
-#include <cmath>
-#include <iomanip>
-#include <sstream>
-
 #include <ssc/background_mesh.h>
 #include <ssc/mechanics/volume_elasticity.h>
 #include <ssc/output.h>
 #include <ssc/scenes/punch_scene.h>
 #include <ssc/scenes/scene_run.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace ssc
 {
@@ -69,9 +69,9 @@ namespace ssc
   {
     const RunParameters &run = parameters.run;
     SceneRun             scene(parameters, mpi_communicator, "punch");
-    RunOutput &          output = scene.output();
-    ConditionalOStream & pcout  = scene.pcout();
-    TimerOutput &        timer  = scene.timer();
+    RunOutput           &output = scene.output();
+    ConditionalOStream  &pcout  = scene.pcout();
+    TimerOutput         &timer  = scene.timer();
 
     BackgroundMesh mesh(parameters.layers, parameters.mesh, mpi_communicator);
     {
@@ -95,8 +95,8 @@ namespace ssc
                 "displacement")
           << " formulation)" << std::endl;
 
-    const PunchParameters &punch   = parameters.punch;
-    const double           a       = punch.radius;
+    const PunchParameters &punch    = parameters.punch;
+    const double           a        = punch.radius;
     const auto             on_punch = [a](const Point<3> &p) {
       return std::hypot(p[0], p[1]) <= a * (1. + 1e-10);
     };
@@ -111,12 +111,11 @@ namespace ssc
         const double depth = punch.depth * step / punch.load_steps;
         std::vector<DirichletCondition> conditions =
           support_conditions(parameters.elasticity.sides);
-        conditions.push_back(
-          {BoundaryId::top,
-           punch_components,
-           std::make_shared<Functions::ConstantFunction<3>>(
-             std::vector<double>{0., 0., -depth}),
-           on_punch});
+        conditions.push_back({BoundaryId::top,
+                              punch_components,
+                              std::make_shared<Functions::ConstantFunction<3>>(
+                                std::vector<double>{0., 0., -depth}),
+                              on_punch});
         {
           TimerOutput::Scope t(timer, "setup");
           elasticity.setup_system(conditions);
@@ -130,7 +129,7 @@ namespace ssc
         }
         {
           TimerOutput::Scope t(timer, "output");
-          const std::string file =
+          const std::string  file =
             elasticity.write_vtu(output.directory(), "volume", step);
           output.add_pvd_record("volume", depth, file);
         }
@@ -149,8 +148,10 @@ namespace ssc
 
     const double stiffness = forces.front() / depths.front();
     const Layer &top       = parameters.layers.layer(0);
-    const double reference = half_space_stiffness(
-      a, top.youngs_modulus, top.poisson_ratio, punch.contact);
+    const double reference = half_space_stiffness(a,
+                                                  top.youngs_modulus,
+                                                  top.poisson_ratio,
+                                                  punch.contact);
     pcout << "Stiffness: " << std::setprecision(6) << stiffness
           << " N/mm (half-space reference for the top layer's material: "
           << reference << " N/mm)" << std::endl;
@@ -169,26 +170,25 @@ namespace ssc
     nlohmann::ordered_json summary =
       scene.summary(elasticity.n_dofs(),
                     mesh.triangulation().n_global_active_cells());
-    summary["discretisation"] = {
-      {"degree", parameters.elasticity.degree},
-      {"formulation",
-       parameters.elasticity.formulation == Formulation::mixed ?
-         "mixed" :
-         "displacement"},
-      {"material_model", "linear"}};
+    summary["discretisation"]     = {{"degree", parameters.elasticity.degree},
+                                     {"formulation",
+                                  parameters.elasticity.formulation ==
+                                      Formulation::mixed ?
+                                        "mixed" :
+                                        "displacement"},
+                                     {"material_model", "linear"}};
     unsigned int total_iterations = 0;
     for (const unsigned int i : iterations)
       total_iterations += i;
-    summary["solver"]             = {{"linear_iterations", total_iterations},
+    summary["solver"] = {{"linear_iterations", total_iterations},
                          {"linear_iterations_per_step", iterations},
                          {"newton_iterations", 0}};
-    summary["contact"]            = punch.contact == PunchContact::bonded ?
-                                      "bonded" :
-                                      "frictionless";
-    summary["punch_radius_mm"]    = a;
-    summary["force_N"]            = forces;
-    summary["depth_mm"]           = depths;
-    summary["stiffness_N_per_mm"] = stiffness;
+    summary["contact"] =
+      punch.contact == PunchContact::bonded ? "bonded" : "frictionless";
+    summary["punch_radius_mm"]               = a;
+    summary["force_N"]                       = forces;
+    summary["depth_mm"]                      = depths;
+    summary["stiffness_N_per_mm"]            = stiffness;
     summary["half_space_stiffness_N_per_mm"] = reference;
     output.write_summary(summary);
     scene.print_wall_times();

@@ -1,8 +1,8 @@
 #include <deal.II/base/utilities.h>
 
-#include <sstream>
-
 #include <ssc/scenes/scene_run.h>
+
+#include <sstream>
 
 namespace ssc
 {
@@ -26,7 +26,7 @@ namespace ssc
   } // namespace
 
 
-  SceneRun::SceneRun(const Parameters & parameters,
+  SceneRun::SceneRun(const Parameters  &parameters,
                      const MPI_Comm     mpi_communicator,
                      const std::string &scene_name)
     : parameters(parameters)
@@ -58,8 +58,7 @@ namespace ssc
   SceneRun::summary(const types::global_dof_index  dofs,
                     const types::global_cell_index cells) const
   {
-    auto                   wall = phase_timer.get_summary_data(
-      TimerOutput::total_wall_time);
+    auto wall = phase_timer.get_summary_data(TimerOutput::total_wall_time);
     nlohmann::ordered_json timings;
     for (const char *phase : phases)
       timings[phase] = wall.count(phase) ? wall[phase] : 0.;
@@ -71,13 +70,13 @@ namespace ssc
     summary["dofs"]      = dofs;
     summary["cells"]     = cells;
     summary["embedded"]  = {{"septa_triangles", 0},
-                           {"ligament_segments", 0},
-                           {"lobules", 0}};
+                            {"ligament_segments", 0},
+                            {"lobules", 0}};
     summary["mpi_ranks"] = Utilities::MPI::n_mpi_processes(mpi_communicator);
     summary["solver"]    = {{"linear_iterations", 0},
-                         {"linear_iterations_per_step",
-                          nlohmann::ordered_json::array()},
-                         {"newton_iterations", 0}};
+                            {"linear_iterations_per_step",
+                             nlohmann::ordered_json::array()},
+                            {"newton_iterations", 0}};
     summary["timings"]   = timings;
     summary["memory_MB"] =
       Utilities::MPI::sum(resident_memory_MB(true), mpi_communicator);

@@ -30,15 +30,15 @@ namespace ssc
    */
   struct ElasticityParameters
   {
-    unsigned int  degree        = 1;
-    Formulation   formulation   = Formulation::displacement;
-    SideCondition sides         = SideCondition::roller;
-    double        tolerance     = 1e-8;
-    unsigned int  max_iterations = 1000;
-    bool          rigid_body_modes = true;
-    bool          smoothed_aggregation = true;
+    unsigned int  degree                = 1;
+    Formulation   formulation           = Formulation::displacement;
+    SideCondition sides                 = SideCondition::roller;
+    double        tolerance             = 1e-8;
+    unsigned int  max_iterations        = 1000;
+    bool          rigid_body_modes      = true;
+    bool          smoothed_aggregation  = true;
     double        aggregation_threshold = 1e-4;
-    unsigned int  smoother_sweeps = 2;
+    unsigned int  smoother_sweeps       = 2;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -22,14 +22,14 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <ssc/background_mesh.h>
+#include <ssc/layer_stack.h>
+#include <ssc/mechanics/elasticity_parameters.h>
+
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <ssc/background_mesh.h>
-#include <ssc/layer_stack.h>
-#include <ssc/mechanics/elasticity_parameters.h>
 
 class Epetra_MultiVector;
 
@@ -42,10 +42,10 @@ namespace ssc
    */
   struct DirichletCondition
   {
-    types::boundary_id                     boundary_id;
-    ComponentMask                          components;
-    std::shared_ptr<const Function<3>>     values;
-    std::function<bool(const Point<3> &)>  region;
+    types::boundary_id                    boundary_id;
+    ComponentMask                         components;
+    std::shared_ptr<const Function<3>>    values;
+    std::function<bool(const Point<3> &)> region;
   };
 
   /// What one linear solve did.
@@ -65,11 +65,11 @@ namespace ssc
   class VolumeElasticity
   {
   public:
-    VolumeElasticity(BackgroundMesh &            mesh,
-                     const LayerStack &          layers,
+    VolumeElasticity(BackgroundMesh             &mesh,
+                     const LayerStack           &layers,
                      const ElasticityParameters &parameters,
-                     TimerOutput &               timer,
-                     ConditionalOStream &        pcout);
+                     TimerOutput                &timer,
+                     ConditionalOStream         &pcout);
     ~VolumeElasticity();
 
     /// Distributes the degrees of freedom.
@@ -137,19 +137,19 @@ namespace ssc
     /// The one cell assembly of this physics (matrix and load vector).
     void
     assemble_cell(const typename DoFHandler<3>::active_cell_iterator &cell,
-                  FEValues<3> &                                       fe_values,
-                  const Function<3> *body_force,
+                  FEValues<3>                                        &fe_values,
+                  const Function<3>  *body_force,
                   FullMatrix<double> &cell_matrix,
-                  Vector<double> &    cell_rhs) const;
+                  Vector<double>     &cell_rhs) const;
 
     void
     setup_preconditioner();
 
-    BackgroundMesh &            mesh;
-    const LayerStack &          layers;
+    BackgroundMesh             &mesh;
+    const LayerStack           &layers;
     const ElasticityParameters &parameters;
-    TimerOutput &               timer;
-    ConditionalOStream &        pcout;
+    TimerOutput                &timer;
+    ConditionalOStream         &pcout;
     MPI_Comm                    mpi_communicator;
 
     FESystem<3>   fe;
@@ -158,17 +158,17 @@ namespace ssc
     /// Quadrature and update flags of the one cell assembly routine.
     const QGauss<3>   cell_quadrature;
     const UpdateFlags assembly_flags;
-    IndexSet      locally_owned_dofs;
-    IndexSet      locally_relevant_dofs;
+    IndexSet          locally_owned_dofs;
+    IndexSet          locally_relevant_dofs;
 
     AffineConstraints<double> hanging_node_constraints;
     AffineConstraints<double> constraints;
     std::vector<IndexSet>     constrained_dofs_per_condition;
 
-    TrilinosWrappers::SparseMatrix     system_matrix;
-    TrilinosWrappers::MPI::Vector      system_rhs;
-    TrilinosWrappers::MPI::Vector      locally_relevant_solution;
-    TrilinosWrappers::PreconditionAMG  preconditioner;
+    TrilinosWrappers::SparseMatrix      system_matrix;
+    TrilinosWrappers::MPI::Vector       system_rhs;
+    TrilinosWrappers::MPI::Vector       locally_relevant_solution;
+    TrilinosWrappers::PreconditionAMG   preconditioner;
     std::unique_ptr<Epetra_MultiVector> near_null_space;
   };
 } // namespace ssc

@@ -3,9 +3,9 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <vector>
-
 #include <ssc/parameters.h>
+
+#include <vector>
 
 namespace ssc
 {
@@ -22,7 +22,7 @@ namespace ssc
     types::global_dof_index dofs = 0;
     std::vector<double>     depths;
     std::vector<double>     forces;
-    double                  stiffness           = 0;
+    double                  stiffness            = 0;
     double                  half_space_stiffness = 0;
   };
 

@@ -6,11 +6,10 @@
 #include <deal.II/base/timer.h>
 
 #include <nlohmann/json.hpp>
-
-#include <string>
-
 #include <ssc/output.h>
 #include <ssc/parameters.h>
+
+#include <string>
 
 namespace ssc
 {
@@ -23,7 +22,7 @@ namespace ssc
   class SceneRun
   {
   public:
-    SceneRun(const Parameters & parameters,
+    SceneRun(const Parameters  &parameters,
              const MPI_Comm     mpi_communicator,
              const std::string &scene_name);
 
@@ -49,7 +48,7 @@ namespace ssc
     /// solver statistics zero until the scene sets them); the scene adds its
     /// own results.
     nlohmann::ordered_json
-    summary(const types::global_dof_index dofs,
+    summary(const types::global_dof_index  dofs,
             const types::global_cell_index cells) const;
 
     /// One line with the wall time per phase (not in test mode).

@@ -1,0 +1,37 @@
+#ifndef ssc_microstructure_ligaments_h
+#define ssc_microstructure_ligaments_h
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/point.h>
+
+#include <ssc/layer_stack.h>
+#include <ssc/microstructure/microstructure_parameters.h>
+
+#include <vector>
+
+namespace ssc
+{
+  /// A skin ligament: a straight cable perpendicular to the skin.
+  struct Ligament
+  {
+    Point<3> top;    ///< on the bottom of the skin
+    Point<3> bottom; ///< on the top of the target layer (SM or deep)
+  };
+
+  /**
+   * Places the skin ligaments of the region @p parameters.region (bounding
+   * rectangle @p rectangle): their number is the integral of the density
+   * (per cm^2) over the region, rounded; their positions are drawn from the
+   * density by rejection sampling (std::mt19937 seeded with the seed), so a
+   * density that varies over the patch (buttock, knee) puts more ligaments
+   * where it is higher. Each runs vertically from the bottom of the skin
+   * (the last skin layer from the top) to the top of the first SM layer
+   * below it or to the top of the first deep layer.
+   */
+  std::vector<Ligament>
+  place_ligaments(const LayerStack               &layers,
+                  const BoundingBox<2>           &rectangle,
+                  const MicrostructureParameters &parameters);
+} // namespace ssc
+
+#endif

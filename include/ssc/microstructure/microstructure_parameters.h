@@ -1,0 +1,78 @@
+#ifndef ssc_microstructure_microstructure_parameters_h
+#define ssc_microstructure_microstructure_parameters_h
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  /// Where the explicit microstructure is built (DESIGN.md §5: model only
+  /// what a scene needs); outside it the layers are homogeneous.
+  enum class RegionShape
+  {
+    everywhere,
+    box,
+    cylinder
+  };
+
+  /**
+   * The lateral region of interest of the microstructure: the whole patch,
+   * an axis-parallel box or a vertical cylinder, through every layer.
+   */
+  struct MicrostructureRegion
+  {
+    RegionShape shape = RegionShape::everywhere;
+    Point<2>    centre;
+    double      half_length_x = 10;
+    double      half_length_y = 10;
+    double      radius        = 10;
+
+    /// Whether the lateral position (x, y) lies in the region.
+    bool
+    contains(const double x, const double y) const;
+
+    /// The region's bounding rectangle clipped to the patch
+    /// [-Lx/2, Lx/2] x [-Ly/2, Ly/2]; throws if they do not overlap.
+    BoundingBox<2>
+    bounding_rectangle(const double patch_length_x,
+                       const double patch_length_y) const;
+  };
+
+  /// Skin ligaments (retinacula cutis running perpendicular to the skin).
+  enum class LigamentTarget
+  {
+    SM,
+    deep
+  };
+
+  /**
+   * Parameters of the procedural microstructure (section "Microstructure"):
+   * lobule tessellation of the SAT and DAT layers (their lobule diameters
+   * are layer parameters), septa, skin ligaments and the region of interest.
+   */
+  struct MicrostructureParameters
+  {
+    bool                 lobules                 = false;
+    bool                 ligaments               = false;
+    unsigned int         seed                    = 1;
+    unsigned int         lloyd_iterations        = 30;
+    double               minimum_septum_area     = 1e-3;
+    double               septum_triangle_size    = 1;
+    std::string          ligament_density        = "1";
+    LigamentTarget       ligament_target         = LigamentTarget::SM;
+    double               ligament_segment_length = 0.5;
+    MicrostructureRegion region;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+} // namespace ssc
+
+#endif

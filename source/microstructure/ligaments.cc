@@ -1,0 +1,135 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <ssc/microstructure/ligaments.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+namespace ssc
+{
+  namespace
+  {
+    /// Indices of the layers whose top and bottom bound the ligaments.
+    std::pair<unsigned int, unsigned int>
+    ligament_interfaces(const LayerStack &layers, const LigamentTarget target)
+    {
+      unsigned int top = 0;
+      while (top < layers.n_layers() &&
+             layers.layer(top).kind == LayerKind::skin)
+        ++top;
+      AssertThrow(top > 0 && top < layers.n_layers(),
+                  ExcMessage("Microstructure/Ligaments: skin ligaments need "
+                             "a layer of kind skin at the top of the stack "
+                             "and layers below it."));
+      const LayerKind wanted =
+        target == LigamentTarget::SM ? LayerKind::SM : LayerKind::deep;
+      for (unsigned int l = top; l < layers.n_layers(); ++l)
+        if (layers.layer(l).kind == wanted)
+          {
+            AssertThrow(l > top,
+                        ExcMessage("Microstructure/Ligaments/Target: the "
+                                   "target layer lies directly under the "
+                                   "skin, so the ligaments have no length."));
+            return {top, l};
+          }
+      AssertThrow(false,
+                  ExcMessage(std::string("Microstructure/Ligaments/Target = ") +
+                             (target == LigamentTarget::SM ? "SM" : "deep") +
+                             ": there is no layer of that kind below the "
+                             "skin."));
+      return {0, 0};
+    }
+  } // namespace
+
+
+  std::vector<Ligament>
+  place_ligaments(const LayerStack               &layers,
+                  const BoundingBox<2>           &rectangle,
+                  const MicrostructureParameters &parameters)
+  {
+    const auto [top, bottom] =
+      ligament_interfaces(layers, parameters.ligament_target);
+
+    FunctionParser<2> density(1);
+    try
+      {
+        density.initialize("x,y", parameters.ligament_density, {});
+        density.value(Point<2>());
+      }
+    catch (...)
+      {
+        AssertThrow(false,
+                    ExcMessage("Microstructure/Ligaments/Density = '" +
+                               parameters.ligament_density +
+                               "' is not a number or a valid muParser "
+                               "expression of x and y."));
+      }
+
+    // Expected count (per cm^2 = per 100 mm^2) and the density's maximum,
+    // by Gauss quadrature over the region's rectangle.
+    const Point<2>    &lo = rectangle.get_boundary_points().first;
+    const Point<2>    &hi = rectangle.get_boundary_points().second;
+    const unsigned int n  = 32;
+    const QGauss<2>    gauss(3);
+    const double       hx = (hi[0] - lo[0]) / n, hy = (hi[1] - lo[1]) / n;
+    double             expected = 0, maximum = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int q = 0; q <= gauss.size(); ++q)
+          {
+            // the Gauss points, then the cell corner (for the maximum)
+            const Point<2> local =
+              q < gauss.size() ? gauss.point(q) : Point<2>();
+            const Point<2> p(lo[0] + (i + local[0]) * hx,
+                             lo[1] + (j + local[1]) * hy);
+            const double   rho = density.value(p);
+            if (!(rho >= 0))
+              {
+                std::ostringstream message;
+                message << "Microstructure/Ligaments/Density = '"
+                        << parameters.ligament_density << "' is " << rho
+                        << " per cm^2 at (x, y) = (" << p[0] << ", " << p[1]
+                        << "): it must be non-negative.";
+                AssertThrow(false, ExcMessage(message.str()));
+              }
+            maximum = std::max(maximum, rho);
+            if (q < gauss.size() && parameters.region.contains(p[0], p[1]))
+              expected += gauss.weight(q) * hx * hy * rho / 100.;
+          }
+    const unsigned int    count = std::round(expected);
+    std::vector<Ligament> ligaments;
+    if (count == 0)
+      return ligaments;
+    AssertThrow(count < 1e6,
+                ExcMessage("Microstructure/Ligaments/Density asks for more "
+                           "than 1e6 ligaments."));
+
+    std::seed_seq seed_sequence{parameters.seed, 1000003u};
+    std::mt19937  generator(seed_sequence);
+    std::uniform_real_distribution<double> uniform(0., 1.);
+    // the density may exceed the sampled maximum between sample points
+    const double  bound    = 1.05 * maximum;
+    unsigned long attempts = 0;
+    while (ligaments.size() < count)
+      {
+        AssertThrow(++attempts < 1000ul * count + 100000ul,
+                    ExcMessage("Microstructure/Ligaments: could not place "
+                               "the ligaments (is the density zero inside "
+                               "the region of interest?)."));
+        const double x = lo[0] + uniform(generator) * (hi[0] - lo[0]);
+        const double y = lo[1] + uniform(generator) * (hi[1] - lo[1]);
+        const double u = uniform(generator);
+        if (!parameters.region.contains(x, y) ||
+            u * bound > density.value(Point<2>(x, y)))
+          continue;
+        ligaments.push_back(
+          {Point<3>(x, y, -layers.depth_of_interface(top, x, y)),
+           Point<3>(x, y, -layers.depth_of_interface(bottom, x, y))});
+      }
+    return ligaments;
+  }
+} // namespace ssc
