@@ -175,6 +175,7 @@ namespace ssc
     ElasticityParameters::declare_parameters(prm);
     PunchParameters::declare_parameters(prm);
     MicrostructureParameters::declare_parameters(prm);
+    EmbeddedParameters::declare_parameters(prm);
   }
 
 
@@ -217,6 +218,7 @@ namespace ssc
     elasticity.parse_parameters(prm);
     punch.parse_parameters(prm);
     microstructure.parse_parameters(prm);
+    embedded.parse_parameters(prm);
     check_consistency();
   }
 

@@ -17,6 +17,11 @@ namespace ssc
 {
   using namespace dealii;
 
+  /// Writes a valid VTU file without cells (deal.II's writers need at least
+  /// one patch).
+  void
+  write_empty_vtu(std::ostream &out);
+
   /**
    * The folder output/<run name>/ of one run and what goes into it: a log
    * that mirrors the progress lines printed on rank 0, PVD records per

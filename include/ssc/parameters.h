@@ -6,6 +6,7 @@
 #include <ssc/background_mesh.h>
 #include <ssc/layer_stack.h>
 #include <ssc/mechanics/elasticity_parameters.h>
+#include <ssc/mechanics/embedded_parameters.h>
 #include <ssc/microstructure/microstructure_parameters.h>
 #include <ssc/scenes/punch_parameters.h>
 
@@ -69,6 +70,7 @@ namespace ssc
     ElasticityParameters     elasticity;
     PunchParameters          punch;
     MicrostructureParameters microstructure;
+    EmbeddedParameters       embedded;
 
   private:
     static void

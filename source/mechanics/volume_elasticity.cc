@@ -19,6 +19,8 @@
 #include <ssc/mechanics/linear_elastic_material.h>
 #include <ssc/mechanics/volume_elasticity.h>
 
+#include <map>
+
 namespace ssc
 {
   VolumeElasticity::VolumeElasticity(BackgroundMesh             &mesh,
@@ -58,6 +60,57 @@ namespace ssc
     locally_relevant_solution.reinit(locally_owned_dofs,
                                      locally_relevant_dofs,
                                      mpi_communicator);
+  }
+
+
+  void
+  VolumeElasticity::attach(const CellContribution &contribution)
+  {
+    contributions.push_back(&contribution);
+  }
+
+
+  void
+  VolumeElasticity::evaluate_at(
+    const std::vector<PointLocation>   &locations,
+    std::vector<Tensor<1, 3>>          &displacements,
+    std::vector<SymmetricTensor<2, 3>> &strains) const
+  {
+    displacements.assign(locations.size(), Tensor<1, 3>());
+    strains.assign(locations.size(), SymmetricTensor<2, 3>());
+    // group the points by cell: one FEValues per cell
+    std::map<unsigned int, std::vector<unsigned int>> by_cell;
+    for (unsigned int k = 0; k < locations.size(); ++k)
+      if (locations[k].cell.state() == IteratorState::valid)
+        by_cell[locations[k].cell->active_cell_index()].push_back(k);
+    const FEValuesExtractors::Vector displacement(0);
+    for (const auto &[index, points] : by_cell)
+      {
+        std::vector<Point<3>> units;
+        for (const unsigned int k : points)
+          units.push_back(locations[k].unit_point);
+        FEValues<3>                                        fe_values(mapping,
+                              fe,
+                              Quadrature<3>(units),
+                              update_values | update_gradients);
+        const typename DoFHandler<3>::active_cell_iterator cell(
+          &mesh.triangulation(),
+          locations[points[0]].cell->level(),
+          locations[points[0]].cell->index(),
+          &dof_handler);
+        fe_values.reinit(cell);
+        std::vector<Tensor<1, 3>>          u(units.size());
+        std::vector<SymmetricTensor<2, 3>> eps(units.size());
+        fe_values[displacement].get_function_values(locally_relevant_solution,
+                                                    u);
+        fe_values[displacement].get_function_symmetric_gradients(
+          locally_relevant_solution, eps);
+        for (unsigned int q = 0; q < points.size(); ++q)
+          {
+            displacements[points[q]] = u[q];
+            strains[points[q]]       = eps[q];
+          }
+      }
   }
 
 
@@ -209,6 +262,9 @@ namespace ssc
     for (unsigned int i = 0; i < n_dofs; ++i)
       for (unsigned int j = i + 1; j < n_dofs; ++j)
         cell_matrix(i, j) = cell_matrix(j, i);
+
+    for (const CellContribution *contribution : contributions)
+      contribution->add_to_cell(cell, cell_matrix, cell_rhs);
 
     if (mixed)
       {

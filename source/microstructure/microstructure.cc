@@ -7,6 +7,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <ssc/microstructure/microstructure.h>
+#include <ssc/output.h>
 
 #include <cmath>
 #include <iomanip>
@@ -160,18 +161,7 @@ namespace ssc
     {
       if (tria.n_active_cells() == 0)
         {
-          // DataOut cannot handle an empty mesh: a valid, empty file
-          out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-                 "version=\"0.1\">\n<UnstructuredGrid>\n<Piece "
-                 "NumberOfPoints=\"0\" NumberOfCells=\"0\">\n<Points>\n"
-                 "<DataArray type=\"Float32\" NumberOfComponents=\"3\" "
-                 "format=\"ascii\"></DataArray>\n</Points>\n<Cells>\n"
-                 "<DataArray type=\"Int32\" Name=\"connectivity\" "
-                 "format=\"ascii\"></DataArray>\n<DataArray type=\"Int32\" "
-                 "Name=\"offsets\" format=\"ascii\"></DataArray>\n"
-                 "<DataArray type=\"UInt8\" Name=\"types\" "
-                 "format=\"ascii\"></DataArray>\n</Cells>\n</Piece>\n"
-                 "</UnstructuredGrid>\n</VTKFile>\n";
+          write_empty_vtu(out); // DataOut cannot handle an empty mesh
           return;
         }
       DataOut<dim, 3> data_out;

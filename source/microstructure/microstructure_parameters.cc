@@ -86,12 +86,15 @@ namespace ssc
       "slivers from nearly cospherical seeds) and counted in the summary; "
       "the lobule volumes are unaffected.");
     prm.declare_entry("Septum triangle size",
-                      "1",
+                      "2",
                       Patterns::Double(0),
                       "Largest edge (mm) of the triangles of the septa "
                       "surface mesh: every wall is fan-triangulated from its "
                       "centroid and the triangles are subdivided down to "
-                      "this size.");
+                      "this size. It only needs to resolve the shape of the "
+                      "walls (curved where a layer's thickness varies): the "
+                      "mechanics integrates them exactly along the "
+                      "background cells.");
     prm.enter_subsection("Ligaments");
     prm.declare_entry(
       "Density",

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <ssc/background_mesh.h>
+#include <ssc/mechanics/microstructure_coupling.h>
 #include <ssc/mechanics/volume_elasticity.h>
 #include <ssc/output.h>
 #include <ssc/scenes/punch_scene.h>
@@ -95,6 +96,9 @@ namespace ssc
                 "displacement")
           << " formulation)" << std::endl;
 
+    MicrostructureCoupling coupling(parameters, mesh, elasticity, timer, pcout);
+    coupling.setup();
+
     const PunchParameters &punch    = parameters.punch;
     const double           a        = punch.radius;
     const auto             on_punch = [a](const Point<3> &p) {
@@ -132,6 +136,7 @@ namespace ssc
           const std::string  file =
             elasticity.write_vtu(output.directory(), "volume", step);
           output.add_pvd_record("volume", depth, file);
+          coupling.write(output, step, depth);
         }
         depths.push_back(depth);
         forces.push_back(force);
@@ -170,6 +175,7 @@ namespace ssc
     nlohmann::ordered_json summary =
       scene.summary(elasticity.n_dofs(),
                     mesh.triangulation().n_global_active_cells());
+    summary["embedded"]           = coupling.embedded_summary();
     summary["discretisation"]     = {{"degree", parameters.elasticity.degree},
                                      {"formulation",
                                   parameters.elasticity.formulation ==

@@ -23,7 +23,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <ssc/background_mesh.h>
+#include <ssc/embedding/point_locator.h>
 #include <ssc/layer_stack.h>
+#include <ssc/mechanics/cell_contribution.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 
 #include <functional>
@@ -75,6 +77,30 @@ namespace ssc
     /// Distributes the degrees of freedom.
     void
     setup_dofs();
+
+    /// Adds @p contribution (e.g. embedded septa) to every cell assembly
+    /// from now on; it must outlive this object's assemblies.
+    void
+    attach(const CellContribution &contribution);
+
+    const Mapping<3> &
+    get_mapping() const
+    {
+      return mapping;
+    }
+
+    const FiniteElement<3> &
+    get_fe() const
+    {
+      return fe;
+    }
+
+    /// Displacement and its symmetric gradient at located points (zero at
+    /// points owned by another rank; sum over the ranks for all values).
+    void
+    evaluate_at(const std::vector<PointLocation>   &locations,
+                std::vector<Tensor<1, 3>>          &displacements,
+                std::vector<SymmetricTensor<2, 3>> &strains) const;
 
     /// Hanging-node and Dirichlet constraints, sparsity and matrix layout.
     void
@@ -165,11 +191,12 @@ namespace ssc
     AffineConstraints<double> constraints;
     std::vector<IndexSet>     constrained_dofs_per_condition;
 
-    TrilinosWrappers::SparseMatrix      system_matrix;
-    TrilinosWrappers::MPI::Vector       system_rhs;
-    TrilinosWrappers::MPI::Vector       locally_relevant_solution;
-    TrilinosWrappers::PreconditionAMG   preconditioner;
-    std::unique_ptr<Epetra_MultiVector> near_null_space;
+    TrilinosWrappers::SparseMatrix        system_matrix;
+    TrilinosWrappers::MPI::Vector         system_rhs;
+    TrilinosWrappers::MPI::Vector         locally_relevant_solution;
+    TrilinosWrappers::PreconditionAMG     preconditioner;
+    std::unique_ptr<Epetra_MultiVector>   near_null_space;
+    std::vector<const CellContribution *> contributions;
   };
 } // namespace ssc
 

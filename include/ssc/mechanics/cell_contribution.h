@@ -1,0 +1,33 @@
+#ifndef ssc_mechanics_cell_contribution_h
+#define ssc_mechanics_cell_contribution_h
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  /**
+   * Something that adds stiffness (and load) to the background cells it
+   * acts on, e.g. the septa and ligaments embedded in them. The volume
+   * elasticity calls it from its one cell assembly, so matrix, right-hand
+   * side and the residual behind the reaction forces all include it.
+   */
+  class CellContribution
+  {
+  public:
+    virtual ~CellContribution() = default;
+
+    /// Adds to @p cell_matrix and @p cell_rhs (ordered like the cell's
+    /// dofs) what this contribution puts on the locally owned @p cell.
+    virtual void
+    add_to_cell(const DoFHandler<3>::active_cell_iterator &cell,
+                FullMatrix<double>                        &cell_matrix,
+                Vector<double>                            &cell_rhs) const = 0;
+  };
+} // namespace ssc
+
+#endif

@@ -1,0 +1,99 @@
+#ifndef ssc_mechanics_embedded_elasticity_h
+#define ssc_mechanics_embedded_elasticity_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
+
+#include <ssc/embedding/clipped_quadrature.h>
+#include <ssc/mechanics/cell_contribution.h>
+
+#include <functional>
+#include <vector>
+
+namespace ssc
+{
+  /// Membranes (septa, codimension 1) or cables (ligaments, codimension 2).
+  enum class EmbeddedKind
+  {
+    membrane,
+    cable
+  };
+
+  /// Linear elastic properties of one embedded cell.
+  struct EmbeddedMaterial
+  {
+    double youngs_modulus; ///< MPa
+    double poisson_ratio;  ///< in-plane, membranes only
+    /// Thickness (membrane, mm) or cross-section area (cable, mm^2).
+    double size;
+  };
+
+  /**
+   * Small-strain stiffness of membranes or cables embedded in the
+   * background mesh without degrees of freedom of their own (DESIGN.md §4):
+   * their displacement is the background field at their quadrature points,
+   * so their energy enters the background matrix through the background
+   * shape-function gradients there.
+   *
+   * Membrane (plane stress in the tangent plane, projector P = I - n n):
+   *   (t/2) int lambda_ps (P:eps)^2 + 2 mu (P eps P):(P eps P) dA,
+   *   lambda_ps = 2 lambda mu / (lambda + 2 mu) = E nu / (1 - nu^2).
+   * Cable (unit tangent tau):  (E A / 2) int (tau . eps tau)^2 ds.
+   *
+   * The quadrature comes split along the locally owned background cells
+   * (clipped_quadrature()), so each rank assembles its own cells' part.
+   */
+  class EmbeddedElasticity : public CellContribution
+  {
+  public:
+    EmbeddedElasticity(
+      const EmbeddedKind                                         kind,
+      const std::vector<CellQuadrature>                         &quadrature,
+      const std::function<EmbeddedMaterial(types::material_id)> &material,
+      const FiniteElement<3>                                    &fe,
+      const Mapping<3>                                          &mapping,
+      const MPI_Comm                                             communicator);
+
+    void
+    add_to_cell(const DoFHandler<3>::active_cell_iterator &cell,
+                FullMatrix<double>                        &cell_matrix,
+                Vector<double> &cell_rhs) const override;
+
+    /// Quadrature points on all ranks.
+    unsigned int
+    n_points() const
+    {
+      return n_global_points;
+    }
+
+    /// Strain energy density of the embedded structure (per unit area or
+    /// length) for the background strain @p strain at a point with
+    /// direction @p direction and material @p material: for output.
+    double
+    axial_or_membrane_stress(const SymmetricTensor<2, 3> &strain,
+                             const Tensor<1, 3>          &direction,
+                             const EmbeddedMaterial      &material) const;
+
+  private:
+    /// What one located quadrature point needs for the assembly.
+    struct LocalPoint
+    {
+      Point<3>     unit_point;
+      Tensor<1, 3> direction;
+      /// JxW times the stiffness coefficients: membrane t lambda_ps and
+      /// 2 t mu; cable E A (in the first).
+      double first, second;
+    };
+
+    const EmbeddedKind                   kind;
+    const FiniteElement<3>              &fe;
+    const Mapping<3>                    &mapping;
+    std::vector<std::vector<LocalPoint>> points_per_cell;
+    unsigned int                         n_global_points;
+  };
+} // namespace ssc
+
+#endif

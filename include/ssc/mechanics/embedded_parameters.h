@@ -1,0 +1,35 @@
+#ifndef ssc_mechanics_embedded_parameters_h
+#define ssc_mechanics_embedded_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  /// Material and quadrature of the embedded septa (membranes) and skin
+  /// ligaments (cables), section "Embedded".
+  struct EmbeddedParameters
+  {
+    bool         septa_stiffness         = true;
+    double       septum_youngs_modulus   = 0.1;
+    double       septum_poisson_ratio    = 0.3;
+    double       septum_thickness        = 0.1;
+    unsigned int septum_quadrature       = 2;
+    bool         ligament_stiffness      = true;
+    double       ligament_youngs_modulus = 0.1;
+    double       ligament_diameter       = 0.3;
+    unsigned int ligament_quadrature     = 2;
+
+    /// Cross-section area of a ligament, mm^2.
+    double
+    ligament_area() const;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+} // namespace ssc
+
+#endif

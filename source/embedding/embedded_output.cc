@@ -1,0 +1,123 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.templates.h>
+
+#include <deal.II/grid/reference_cell.h>
+
+#include <ssc/embedding/embedded_output.h>
+#include <ssc/mechanics/volume_elasticity.h>
+#include <ssc/output.h>
+
+#include <fstream>
+
+namespace ssc
+{
+  template <int dim>
+  EmbeddedFieldWriter<dim>::EmbeddedFieldWriter(
+    const Triangulation<dim, 3> &mesh,
+    const PointLocator          &locator)
+    : mesh(mesh)
+    , communicator(locator.communicator())
+  {
+    std::vector<Point<3>> points;
+    for (const auto &cell : mesh.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        points.push_back(cell->vertex(v));
+    for (const auto &cell : mesh.active_cell_iterators())
+      {
+        points.push_back(cell->center());
+        Tensor<1, 3> d;
+        if (dim == 1)
+          d = cell->vertex(1) - cell->vertex(0);
+        else
+          d = cross_product_3d(cell->vertex(1) - cell->vertex(0),
+                               cell->vertex(2) - cell->vertex(0));
+        directions.push_back(d.norm() > 0 ? d / d.norm() : d);
+      }
+    locations = locator.locate(points);
+  }
+
+
+  template <int dim>
+  void
+  EmbeddedFieldWriter<dim>::write(const std::string            &file,
+                                  const VolumeElasticity       &elasticity,
+                                  const std::vector<CellField> &fields) const
+  {
+    std::vector<Tensor<1, 3>>          u;
+    std::vector<SymmetricTensor<2, 3>> strain;
+    elasticity.evaluate_at(locations, u, strain);
+    // each point is owned by exactly one rank: the sum assembles them all
+    std::vector<double> values(9 * locations.size());
+    for (unsigned int k = 0; k < locations.size(); ++k)
+      {
+        for (unsigned int d = 0; d < 3; ++d)
+          values[9 * k + d] = u[k][d];
+        for (unsigned int d = 0; d < 6; ++d)
+          values[9 * k + 3 + d] =
+            strain[k][SymmetricTensor<2, 3>::unrolled_to_component_indices(d)];
+      }
+    Utilities::MPI::sum(values, communicator, values);
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+
+    const ReferenceCell reference_cell =
+      dim == 1 ? ReferenceCells::Line : ReferenceCells::Triangle;
+    const unsigned int                      n_vertices = dim + 1;
+    std::vector<DataOutBase::Patch<dim, 3>> patches;
+    unsigned int                            vertex = 0, c = 0;
+    const unsigned int first_centre = mesh.n_active_cells() * n_vertices;
+    for (const auto &cell : mesh.active_cell_iterators())
+      {
+        DataOutBase::Patch<dim, 3> patch;
+        patch.reference_cell = reference_cell;
+        patch.n_subdivisions = 1;
+        patch.data.reinit(3 + fields.size(), n_vertices);
+        const unsigned int    k_centre = first_centre + c;
+        SymmetricTensor<2, 3> eps;
+        for (unsigned int d = 0; d < 6; ++d)
+          eps[SymmetricTensor<2, 3>::unrolled_to_component_indices(d)] =
+            values[9 * k_centre + 3 + d];
+        for (unsigned int v = 0; v < n_vertices; ++v, ++vertex)
+          {
+            patch.vertices[v] = cell->vertex(v);
+            for (unsigned int d = 0; d < 3; ++d)
+              patch.data(d, v) = values[9 * vertex + d];
+          }
+        for (unsigned int f = 0; f < fields.size(); ++f)
+          {
+            const double value =
+              fields[f].second(eps, directions[c], cell->material_id());
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              patch.data(3 + f, v) = value;
+          }
+        patch.patch_index = c++;
+        patches.push_back(patch);
+      }
+
+    std::vector<std::string> names = {"displacement",
+                                      "displacement",
+                                      "displacement"};
+    for (const auto &field : fields)
+      names.push_back(field.first);
+    std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>
+                          vectors = {{0,
+                                      2,
+                                      "displacement",
+                                      DataComponentInterpretation::component_is_part_of_vector}};
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    std::ofstream out(file);
+    if (patches.empty())
+      write_empty_vtu(out);
+    else
+      DataOutBase::write_vtu(patches, names, vectors, flags, out);
+  }
+
+
+  template class EmbeddedFieldWriter<1>;
+  template class EmbeddedFieldWriter<2>;
+} // namespace ssc

@@ -1,0 +1,127 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <ssc/mechanics/embedded_elasticity.h>
+
+namespace ssc
+{
+  EmbeddedElasticity::EmbeddedElasticity(
+    const EmbeddedKind                                         kind,
+    const std::vector<CellQuadrature>                         &quadrature,
+    const std::function<EmbeddedMaterial(types::material_id)> &material,
+    const FiniteElement<3>                                    &fe,
+    const Mapping<3>                                          &mapping,
+    const MPI_Comm                                             communicator)
+    : kind(kind)
+    , fe(fe)
+    , mapping(mapping)
+  {
+    unsigned int n_local = 0;
+    for (const CellQuadrature &cell_quadrature : quadrature)
+      {
+        const unsigned int index = cell_quadrature.cell->active_cell_index();
+        if (points_per_cell.size() <= index)
+          points_per_cell.resize(
+            cell_quadrature.cell->get_triangulation().n_active_cells());
+        for (unsigned int q = 0; q < cell_quadrature.JxW.size(); ++q)
+          {
+            const EmbeddedMaterial m   = material(cell_quadrature.materials[q]);
+            const double           JxW = cell_quadrature.JxW[q];
+            LocalPoint             p;
+            p.unit_point = cell_quadrature.unit_points[q];
+            p.direction  = cell_quadrature.directions[q];
+            if (kind == EmbeddedKind::membrane)
+              {
+                const double E = m.youngs_modulus, nu = m.poisson_ratio;
+                p.first  = JxW * m.size * E * nu / (1. - nu * nu);
+                p.second = JxW * m.size * E / (1. + nu);
+              }
+            else
+              {
+                p.first  = JxW * m.youngs_modulus * m.size;
+                p.second = 0;
+              }
+            points_per_cell[index].push_back(p);
+            ++n_local;
+          }
+      }
+    n_global_points = Utilities::MPI::sum(n_local, communicator);
+  }
+
+
+  void
+  EmbeddedElasticity::add_to_cell(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    FullMatrix<double>                        &cell_matrix,
+    Vector<double> &) const
+  {
+    const unsigned int index = cell->active_cell_index();
+    if (index >= points_per_cell.size() || points_per_cell[index].empty())
+      return;
+    const std::vector<LocalPoint> &local = points_per_cell[index];
+    std::vector<Point<3>>          units(local.size());
+    for (unsigned int q = 0; q < local.size(); ++q)
+      units[q] = local[q].unit_point;
+    FEValues<3> fe_values(mapping, fe, Quadrature<3>(units), update_gradients);
+    fe_values.reinit(cell);
+
+    const unsigned int        n = fe.n_dofs_per_cell();
+    std::vector<Tensor<2, 3>> strain(n); // tangential part P eps P
+    std::vector<double>       trace(n);
+    for (unsigned int q = 0; q < local.size(); ++q)
+      {
+        const Tensor<1, 3> &d = local[q].direction;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            const Tensor<1, 3> g = fe_values.shape_grad_component(i, q, c);
+            if (kind == EmbeddedKind::cable)
+              // tau . eps tau with eps = sym(e_c (x) g)
+              trace[i] = d[c] * (d * g);
+            else
+              {
+                // P eps P = sym((P e_c) (x) (P g))
+                Tensor<1, 3> Pe = -d[c] * d;
+                Pe[c] += 1.;
+                const Tensor<1, 3> Pg = g - (d * g) * d;
+                const Tensor<2, 3> a  = outer_product(Pe, Pg);
+                strain[i]             = 0.5 * (a + transpose(a));
+                trace[i]              = Pe * Pg;
+              }
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              double value = local[q].first * trace[i] * trace[j];
+              if (kind == EmbeddedKind::membrane)
+                value += local[q].second * scalar_product(strain[i], strain[j]);
+              cell_matrix(i, j) += value;
+            }
+      }
+  }
+
+
+  double
+  EmbeddedElasticity::axial_or_membrane_stress(
+    const SymmetricTensor<2, 3> &strain,
+    const Tensor<1, 3>          &d,
+    const EmbeddedMaterial      &m) const
+  {
+    const Tensor<2, 3> eps = strain;
+    if (kind == EmbeddedKind::cable)
+      return m.youngs_modulus * (d * (eps * d));
+    // von Mises stress of the plane-stress state sigma = lambda_ps tr P +
+    // 2 mu e in the tangent plane
+    Tensor<2, 3> P = unit_symmetric_tensor<3>();
+    P -= outer_product(d, d);
+    const Tensor<2, 3> e = P * eps * P;
+    const double       E = m.youngs_modulus, nu = m.poisson_ratio;
+    const Tensor<2, 3> sigma =
+      E * nu / (1 - nu * nu) * trace(e) * P + E / (1 + nu) * e;
+    const Tensor<2, 3> s =
+      sigma - trace(sigma) / 3. * unit_symmetric_tensor<3>();
+    return std::sqrt(1.5 * scalar_product(s, s));
+  }
+} // namespace ssc
