@@ -1,13 +1,15 @@
 #!/bin/bash
 # ssc.sh: set-up, build, run and test in one place (see README.md).
-#   ./ssc.sh run [FILE.prm] [ssc options]   install, build, run the main scene
+#   ./ssc.sh run [FILE.prm] [ssc options]   install, build, run a scene (by
+#                                           default the forearm indentation,
+#                                           with its plots) into output/
 #   ./ssc.sh test                           install, build, run the test suite
 #   ./ssc.sh build                          install and build only
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")" && pwd)"
 BUILD="${SSC_BUILD_DIR:-$ROOT/build}"
 JOBS="${SSC_JOBS:-2}"
-MAIN_SCENE="$ROOT/prm/punch.prm"   # becomes the forearm indentation scene
+MAIN_SCENE="$ROOT/prm/forearm_indentation.prm"
 
 PACKAGES="libdeal.ii-dev libcgal-dev libeigen3-dev libboost-dev
   nlohmann-json3-dev numdiff cmake ninja-build ccache openmpi-bin
@@ -61,6 +63,11 @@ case "${1:-run}" in
       prm="$MAIN_SCENE"
     fi
     "$BUILD/bin/ssc" "$prm" "$@"
+    # pictures of the main scene (force-depth, surface profile, section)
+    if [ "$prm" = "$MAIN_SCENE" ] && [ $# -eq 0 ]; then
+      /usr/bin/python3 "$ROOT/scripts/plot_indentation.py" \
+        "$ROOT/output/forearm_indentation"
+    fi
     ;;
   test)
     build

@@ -4,7 +4,7 @@
 #include <ssc/application.h>
 #include <ssc/parameters.h>
 #include <ssc/scenes/geometry_scene.h>
-#include <ssc/scenes/punch_scene.h>
+#include <ssc/scenes/indentation_scene.h>
 
 #include <sstream>
 
@@ -111,8 +111,8 @@ namespace ssc
               out << file << ": parameters are valid" << std::endl;
             return 0;
           }
-        if (parameters.run.scene == "punch")
-          PunchScene(parameters, mpi_communicator).run();
+        if (parameters.run.scene == "indentation")
+          IndentationScene(parameters, mpi_communicator).run();
         else if (parameters.run.scene == "geometry")
           GeometryScene(parameters, mpi_communicator).run();
         return 0;

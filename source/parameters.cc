@@ -15,15 +15,17 @@ namespace ssc
   {
     prm.enter_subsection("Run");
     prm.declare_entry("Scene",
-                      "punch",
-                      Patterns::Selection("punch|geometry"),
-                      "What to simulate. punch: a rigid flat cylindrical "
-                      "punch pressed to a prescribed depth at the patch "
-                      "centre (linear elasticity). geometry: build the "
+                      "indentation",
+                      Patterns::Selection("indentation|geometry"),
+                      "What to simulate. indentation: a rigid flat "
+                      "cylindrical punch at the patch centre, pressed to "
+                      "prescribed depths or with prescribed forces (section "
+                      "Punch), with the microstructure embedded when it is "
+                      "switched on. geometry: build the "
                       "layered patch and its microstructure (lobules, septa, "
                       "ligaments) and write them, without mechanics.");
     prm.declare_entry("Name",
-                      "punch",
+                      "indentation",
                       Patterns::Anything(),
                       "Name of the run: results go to <Output directory>/"
                       "<Name>/.");
@@ -248,7 +250,7 @@ namespace ssc
         if (microstructure.ligaments)
           place_ligaments(layers, rectangle, microstructure);
       }
-    if (run.scene == "punch")
+    if (run.scene == "indentation")
       {
         const double smallest =
           std::min(mesh.patch_length_x, mesh.patch_length_y);

@@ -6,7 +6,7 @@
 // is 1e-12).
 
 #include <ssc/parameters.h>
-#include <ssc/scenes/punch_scene.h>
+#include <ssc/scenes/indentation_scene.h>
 
 #include <iomanip>
 #include <sstream>
@@ -32,8 +32,8 @@ main(int argc, char **argv)
                        std::string("Microstructure/Ligaments=") +
                          (k >= 2 ? "true" : "false"),
                        "Run/Name=septa_block_" + std::to_string(k)});
-      const ssc::PunchResult result =
-        ssc::PunchScene(parameters, MPI_COMM_WORLD).run();
+      const ssc::IndentationResult result =
+        ssc::IndentationScene(parameters, MPI_COMM_WORLD).run();
       stiffness[k] = result.stiffness;
       std::ostringstream line;
       line << std::setw(20) << labels[k] << ": stiffness "

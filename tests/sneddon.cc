@@ -10,7 +10,7 @@
 // bottom of the finite block, which adds about +0.2 %.
 
 #include <ssc/parameters.h>
-#include <ssc/scenes/punch_scene.h>
+#include <ssc/scenes/indentation_scene.h>
 
 #include <cmath>
 #include <iomanip>
@@ -32,8 +32,8 @@ main(int argc, char **argv)
                        "Run/Test mode=true",
                        "Mesh/Region of interest/Local refinements=" +
                          std::to_string(level)});
-      const ssc::PunchResult result =
-        ssc::PunchScene(parameters, MPI_COMM_WORLD).run();
+      const ssc::IndentationResult result =
+        ssc::IndentationScene(parameters, MPI_COMM_WORLD).run();
       error = result.stiffness / result.half_space_stiffness - 1.;
       std::ostringstream line;
       line << "edge refinements " << level << " dofs " << result.dofs

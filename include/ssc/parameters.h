@@ -30,8 +30,8 @@ namespace ssc
   /// Section "Run": which scene, where its results go.
   struct RunParameters
   {
-    std::string scene            = "punch";
-    std::string name             = "punch";
+    std::string scene            = "indentation";
+    std::string name             = "indentation";
     std::string output_directory = "output";
     bool        test_mode        = false;
 

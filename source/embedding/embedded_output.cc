@@ -1,5 +1,5 @@
 #include <deal.II/base/data_out_base.h>
-#include <deal.II/base/mpi.templates.h>
+#include <deal.II/base/mpi.h>
 
 #include <deal.II/grid/reference_cell.h>
 
@@ -46,17 +46,6 @@ namespace ssc
     std::vector<Tensor<1, 3>>          u;
     std::vector<SymmetricTensor<2, 3>> strain;
     elasticity.evaluate_at(locations, u, strain);
-    // each point is owned by exactly one rank: the sum assembles them all
-    std::vector<double> values(9 * locations.size());
-    for (unsigned int k = 0; k < locations.size(); ++k)
-      {
-        for (unsigned int d = 0; d < 3; ++d)
-          values[9 * k + d] = u[k][d];
-        for (unsigned int d = 0; d < 6; ++d)
-          values[9 * k + 3 + d] =
-            strain[k][SymmetricTensor<2, 3>::unrolled_to_component_indices(d)];
-      }
-    Utilities::MPI::sum(values, communicator, values);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
 
@@ -72,16 +61,12 @@ namespace ssc
         patch.reference_cell = reference_cell;
         patch.n_subdivisions = 1;
         patch.data.reinit(3 + fields.size(), n_vertices);
-        const unsigned int    k_centre = first_centre + c;
-        SymmetricTensor<2, 3> eps;
-        for (unsigned int d = 0; d < 6; ++d)
-          eps[SymmetricTensor<2, 3>::unrolled_to_component_indices(d)] =
-            values[9 * k_centre + 3 + d];
+        const SymmetricTensor<2, 3> &eps = strain[first_centre + c];
         for (unsigned int v = 0; v < n_vertices; ++v, ++vertex)
           {
             patch.vertices[v] = cell->vertex(v);
             for (unsigned int d = 0; d < 3; ++d)
-              patch.data(d, v) = values[9 * vertex + d];
+              patch.data(d, v) = u[vertex][d];
           }
         for (unsigned int f = 0; f < fields.size(); ++f)
           {

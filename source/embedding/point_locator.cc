@@ -108,9 +108,9 @@ namespace ssc
       if (seen[k] == 0)
         {
           std::ostringstream message;
-          message << "The embedded point (" << points[k]
-                  << ") lies in no cell of the background mesh (is the "
-                     "microstructure outside the layered patch?).";
+          message << "The point (" << points[k]
+                  << ") lies in no cell of the background mesh (outside "
+                     "the layered patch?).";
           AssertThrow(false, ExcMessage(message.str()));
         }
     unsigned int taken = 0;

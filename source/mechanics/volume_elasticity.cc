@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.templates.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 
@@ -19,6 +20,7 @@
 #include <ssc/mechanics/linear_elastic_material.h>
 #include <ssc/mechanics/volume_elasticity.h>
 
+#include <limits>
 #include <map>
 
 namespace ssc
@@ -56,7 +58,8 @@ namespace ssc
   {
     dof_handler.distribute_dofs(fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    DoFTools::extract_locally_relevant_dofs(dof_handler, mesh_relevant_dofs);
+    locally_relevant_dofs = mesh_relevant_dofs;
     locally_relevant_solution.reinit(locally_owned_dofs,
                                      locally_relevant_dofs,
                                      mpi_communicator);
@@ -111,13 +114,96 @@ namespace ssc
             strains[points[q]]       = eps[q];
           }
       }
+    // each point is owned by exactly one rank: the sum gathers them all
+    std::vector<double> values(9 * locations.size());
+    for (unsigned int k = 0; k < locations.size(); ++k)
+      for (unsigned int d = 0; d < 9; ++d)
+        values[9 * k + d] =
+          d < 3 ?
+            displacements[k][d] :
+            strains[k][SymmetricTensor<2, 3>::unrolled_to_component_indices(d -
+                                                                            3)];
+    Utilities::MPI::sum(values, mpi_communicator, values);
+    for (unsigned int k = 0; k < locations.size(); ++k)
+      for (unsigned int d = 0; d < 9; ++d)
+        (d < 3 ?
+           displacements[k][d] :
+           strains[k][SymmetricTensor<2, 3>::unrolled_to_component_indices(
+             d - 3)]) = values[9 * k + d];
   }
 
 
   void
   VolumeElasticity::setup_system(
-    const std::vector<DirichletCondition> &conditions)
+    const std::vector<DirichletCondition> &conditions,
+    const std::vector<TiedCondition>      &ties)
   {
+    const Quadrature<2> support_points(fe.get_unit_face_support_points());
+    FEFaceValues<3>     fe_face_values(mapping,
+                                   fe,
+                                   support_points,
+                                   update_quadrature_points);
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    // Calls f(dof, support point, component) for every dof on the locally
+    // relevant faces of boundary @p id.
+    const auto for_boundary_dofs = [&](const types::boundary_id id,
+                                       const auto              &f) {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const unsigned int face : cell->face_indices())
+            if (cell->face(face)->at_boundary() &&
+                cell->face(face)->boundary_id() == id)
+              {
+                fe_face_values.reinit(cell, face);
+                cell->face(face)->get_dof_indices(face_dofs);
+                for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                  f(face_dofs[i],
+                    fe_face_values.quadrature_point(i),
+                    fe.face_system_to_component_index(i).first);
+              }
+    };
+
+    // The master of each tie: the dof nearest to master_near (smallest index
+    // on ties), agreed on by all ranks and made locally relevant everywhere
+    // so that every rank can resolve u_i = u_master.
+    tie_masters.clear();
+    locally_relevant_dofs = mesh_relevant_dofs;
+    for (const TiedCondition &tie : ties)
+      {
+        double                  nearest = std::numeric_limits<double>::max();
+        types::global_dof_index master  = numbers::invalid_dof_index;
+        for_boundary_dofs(tie.boundary_id,
+                          [&](const types::global_dof_index dof,
+                              const Point<3>               &p,
+                              const unsigned int            component) {
+                            if (component != tie.component ||
+                                (tie.region && !tie.region(p)))
+                              return;
+                            const double d = p.distance(tie.master_near);
+                            if (d < nearest || (d == nearest && dof < master))
+                              {
+                                nearest = d;
+                                master  = dof;
+                              }
+                          });
+        const double global_nearest =
+          Utilities::MPI::min(nearest, mpi_communicator);
+        AssertThrow(global_nearest < std::numeric_limits<double>::max(),
+                    ExcMessage("A tied boundary condition (rigid punch) "
+                               "holds no degree of freedom: is the punch "
+                               "smaller than the mesh cells?"));
+        if (nearest != global_nearest)
+          master = numbers::invalid_dof_index;
+        master = Utilities::MPI::min(master, mpi_communicator);
+        tie_masters.push_back(master);
+        locally_relevant_dofs.add_index(master);
+      }
+    locally_relevant_dofs.compress();
+    if (!ties.empty())
+      locally_relevant_solution.reinit(locally_owned_dofs,
+                                       locally_relevant_dofs,
+                                       mpi_communicator);
+
     hanging_node_constraints.clear();
     hanging_node_constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler,
@@ -129,43 +215,49 @@ namespace ssc
     constraints.merge(hanging_node_constraints);
 
     // Dirichlet values at the face support points of every locally relevant
-    // boundary face; the first condition that claims a dof wins.
-    constrained_dofs_per_condition.assign(conditions.size(),
+    // boundary face; the first condition that claims a dof wins. The
+    // condition's dofs are remembered for its reaction force.
+    constrained_dofs_per_condition.assign(conditions.size() + ties.size(),
                                           IndexSet(dof_handler.n_dofs()));
-    const Quadrature<2> support_points(fe.get_unit_face_support_points());
-    FEFaceValues<3>     fe_face_values(mapping,
-                                   fe,
-                                   support_points,
-                                   update_quadrature_points);
-    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     for (unsigned int c = 0; c < conditions.size(); ++c)
       {
         const DirichletCondition &condition = conditions[c];
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (!cell->is_artificial())
-            for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  cell->face(f)->boundary_id() == condition.boundary_id)
-                {
-                  fe_face_values.reinit(cell, f);
-                  cell->face(f)->get_dof_indices(face_dofs);
-                  for (unsigned int i = 0; i < face_dofs.size(); ++i)
-                    {
-                      const unsigned int component =
-                        fe.face_system_to_component_index(i).first;
-                      const Point<3> &p = fe_face_values.quadrature_point(i);
-                      const types::global_dof_index dof = face_dofs[i];
-                      if (!condition.components[component] ||
-                          constraints.is_constrained(dof) ||
-                          (condition.region && !condition.region(p)))
-                        continue;
-                      constraints.add_line(dof);
-                      constraints.set_inhomogeneity(
-                        dof, condition.values->value(p, component));
-                      constrained_dofs_per_condition[c].add_index(dof);
-                    }
-                }
+        for_boundary_dofs(condition.boundary_id,
+                          [&](const types::global_dof_index dof,
+                              const Point<3>               &p,
+                              const unsigned int            component) {
+                            if (!condition.components[component] ||
+                                constraints.is_constrained(dof) ||
+                                (condition.region && !condition.region(p)))
+                              return;
+                            constraints.add_line(dof);
+                            constraints.set_inhomogeneity(
+                              dof, condition.values->value(p, component));
+                            constrained_dofs_per_condition[c].add_index(dof);
+                          });
         constrained_dofs_per_condition[c].compress();
+      }
+    // Ties: u_i = u_master; their reaction counts as condition
+    // conditions.size() + t (the master included).
+    for (unsigned int t = 0; t < ties.size(); ++t)
+      {
+        const TiedCondition &tie = ties[t];
+        IndexSet &tied = constrained_dofs_per_condition[conditions.size() + t];
+        tied.add_index(tie_masters[t]);
+        for_boundary_dofs(tie.boundary_id,
+                          [&](const types::global_dof_index dof,
+                              const Point<3>               &p,
+                              const unsigned int            component) {
+                            if (component != tie.component ||
+                                dof == tie_masters[t] ||
+                                constraints.is_constrained(dof) ||
+                                (tie.region && !tie.region(p)))
+                              return;
+                            constraints.add_line(dof);
+                            constraints.add_entry(dof, tie_masters[t], 1.);
+                            tied.add_index(dof);
+                          });
+        tied.compress();
       }
     constraints.close();
 
@@ -184,6 +276,44 @@ namespace ssc
     sparsity.compress();
     system_matrix.reinit(sparsity);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+  }
+
+
+  types::global_dof_index
+  VolumeElasticity::master_dof(const unsigned int tie_index) const
+  {
+    AssertThrow(tie_index < tie_masters.size(),
+                ExcMessage("No such tied condition."));
+    return tie_masters[tie_index];
+  }
+
+
+  void
+  VolumeElasticity::add_nodal_force(const types::global_dof_index dof,
+                                    const double                  force)
+  {
+    if (locally_owned_dofs.is_element(dof))
+      system_rhs[dof] += force;
+    system_rhs.compress(VectorOperation::add);
+  }
+
+
+  double
+  VolumeElasticity::dof_value(const types::global_dof_index dof) const
+  {
+    AssertThrow(locally_relevant_dofs.is_element(dof),
+                ExcMessage("dof_value() needs a locally relevant dof."));
+    return locally_relevant_solution[dof];
+  }
+
+
+  void
+  VolumeElasticity::scale_solution(const double factor)
+  {
+    TrilinosWrappers::MPI::Vector owned(locally_owned_dofs, mpi_communicator);
+    owned = locally_relevant_solution;
+    owned *= factor;
+    locally_relevant_solution = owned;
   }
 
 

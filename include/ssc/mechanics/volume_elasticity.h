@@ -50,6 +50,22 @@ namespace ssc
     std::function<bool(const Point<3> &)> region;
   };
 
+  /**
+   * The dofs of displacement component @p component on (part of) boundary
+   * @p boundary_id that satisfy @p region, tied to one master dof (the one
+   * of that component whose support point is nearest to @p master_near):
+   * they all move together, like the surface under a rigid flat punch. A
+   * force applied to the master dof is then the force on the punch, and the
+   * master's value its displacement (force control).
+   */
+  struct TiedCondition
+  {
+    types::boundary_id                    boundary_id;
+    unsigned int                          component;
+    std::function<bool(const Point<3> &)> region;
+    Point<3>                              master_near;
+  };
+
   /// What one linear solve did.
   struct LinearSolveReport
   {
@@ -95,16 +111,37 @@ namespace ssc
       return fe;
     }
 
-    /// Displacement and its symmetric gradient at located points (zero at
-    /// points owned by another rank; sum over the ranks for all values).
+    /// Displacement and its symmetric gradient at located points, on every
+    /// rank (collective: each point is evaluated by the rank that owns it).
     void
     evaluate_at(const std::vector<PointLocation>   &locations,
                 std::vector<Tensor<1, 3>>          &displacements,
                 std::vector<SymmetricTensor<2, 3>> &strains) const;
 
-    /// Hanging-node and Dirichlet constraints, sparsity and matrix layout.
+    /// Hanging-node, Dirichlet and tied constraints, sparsity and matrix
+    /// layout.
     void
-    setup_system(const std::vector<DirichletCondition> &conditions);
+    setup_system(const std::vector<DirichletCondition> &conditions,
+                 const std::vector<TiedCondition>      &ties = {});
+
+    /// Master dof of tie @p tie_index (the same on every rank).
+    types::global_dof_index
+    master_dof(const unsigned int tie_index) const;
+
+    /// Adds @p force (N) to the right-hand side at @p dof (after
+    /// assemble()).
+    void
+    add_nodal_force(const types::global_dof_index dof, const double force);
+
+    /// Value of the solution at @p dof, which must be locally relevant on
+    /// every rank (e.g. a master dof).
+    double
+    dof_value(const types::global_dof_index dof) const;
+
+    /// Scales the solution (linear problems: the response to another load
+    /// of the same shape).
+    void
+    scale_solution(const double factor);
 
     /// Assembles matrix and right-hand side; @p body_force in N/mm^3.
     void
@@ -186,6 +223,10 @@ namespace ssc
     const UpdateFlags assembly_flags;
     IndexSet          locally_owned_dofs;
     IndexSet          locally_relevant_dofs;
+    /// The locally relevant dofs of the mesh, without the master dofs of
+    /// ties that setup_system() adds to locally_relevant_dofs.
+    IndexSet                             mesh_relevant_dofs;
+    std::vector<types::global_dof_index> tie_masters;
 
     AffineConstraints<double> hanging_node_constraints;
     AffineConstraints<double> constraints;
