@@ -34,6 +34,12 @@ namespace ssc
                       Patterns::Anything(),
                       "Folder that holds one subfolder per run; relative "
                       "paths are taken from the current working directory.");
+    prm.declare_entry("Write fields",
+                      "true",
+                      Patterns::Bool(),
+                      "Write the VTU/PVD field files (volume, septa, "
+                      "ligaments); false keeps only the tables and "
+                      "summary.json (benchmarks).");
     prm.declare_entry("Test mode",
                       "false",
                       Patterns::Bool(),
@@ -51,6 +57,7 @@ namespace ssc
     name             = Utilities::trim(prm.get("Name"));
     output_directory = Utilities::trim(prm.get("Output directory"));
     test_mode        = prm.get_bool("Test mode");
+    write_fields     = prm.get_bool("Write fields");
     prm.leave_subsection();
     AssertThrow(!name.empty() && name.find('/') == std::string::npos &&
                   name != "." && name != "..",

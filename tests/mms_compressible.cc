@@ -42,6 +42,13 @@ main(int argc, char **argv)
                     1,
                     ssc::Formulation::displacement,
                     4);
+  convergence_study("three layers 20:1:5, Q1 enhanced (incompatible modes)",
+                    three_layers,
+                    layered,
+                    0.3,
+                    1,
+                    ssc::Formulation::enhanced,
+                    4);
   convergence_study("three layers 20:1:5, Q2",
                     three_layers,
                     layered,

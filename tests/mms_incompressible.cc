@@ -30,6 +30,13 @@ main(int argc, char **argv)
                     1,
                     ssc::Formulation::mixed,
                     4);
+  convergence_study("nu = 0.4999, Q1 enhanced",
+                    block,
+                    field,
+                    0.4999,
+                    1,
+                    ssc::Formulation::enhanced,
+                    4);
   convergence_study("nu = 0.4999, Q2 mixed",
                     block,
                     field,

@@ -34,6 +34,7 @@ namespace ssc
     std::string name             = "indentation";
     std::string output_directory = "output";
     bool        test_mode        = false;
+    bool        write_fields     = true;
 
     static void
     declare_parameters(ParameterHandler &prm);

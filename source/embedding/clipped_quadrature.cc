@@ -117,6 +117,18 @@ namespace ssc
       quadrature.directions.push_back(direction);
       quadrature.materials.push_back(material);
     }
+
+    /// The cells' quadratures that hold points.
+    std::vector<CellQuadrature>
+    non_empty(
+      std::map<Triangulation<3>::active_cell_iterator, CellQuadrature> &cells)
+    {
+      std::vector<CellQuadrature> result;
+      for (auto &entry : cells)
+        if (!entry.second.JxW.empty())
+          result.push_back(std::move(entry.second));
+      return result;
+    }
   } // namespace
 
 
@@ -179,11 +191,7 @@ namespace ssc
           }
       }
     covered = Utilities::MPI::sum(local_area, locator.communicator());
-    std::vector<CellQuadrature> result;
-    for (auto &entry : by_cell)
-      if (!entry.second.JxW.empty())
-        result.push_back(std::move(entry.second));
-    return result;
+    return non_empty(by_cell);
   }
 
 
@@ -245,10 +253,6 @@ namespace ssc
           }
       }
     covered = Utilities::MPI::sum(local_length, locator.communicator());
-    std::vector<CellQuadrature> result;
-    for (auto &entry : by_cell)
-      if (!entry.second.JxW.empty())
-        result.push_back(std::move(entry.second));
-    return result;
+    return non_empty(by_cell);
   }
 } // namespace ssc

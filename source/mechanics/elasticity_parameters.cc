@@ -14,12 +14,15 @@ namespace ssc
     prm.declare_entry(
       "Formulation",
       "displacement",
-      Patterns::Selection("displacement|mixed"),
+      Patterns::Selection("displacement|mixed|enhanced"),
       "displacement: standard Galerkin (locks for nu -> 0.5 with Q1). mixed: "
       "the volumetric strain is L2-projected onto discontinuous P_{p-1} "
       "polynomials on each cell (B-bar; equivalent to the Q_p-P_{p-1}^disc "
       "displacement-pressure method with the pressure condensed out), "
-      "free of locking for nearly incompressible tissue.");
+      "free of locking for nearly incompressible tissue. enhanced (Q1 "
+      "only): mixed plus nine Wilson-Taylor incompatible modes per cell, "
+      "condensed statically, against the shear locking of thin stiff layers "
+      "(skin, fascia) in bending.");
     prm.declare_entry("Sides",
                       "roller",
                       Patterns::Selection("free|roller|fixed"),
@@ -67,8 +70,11 @@ namespace ssc
   {
     prm.enter_subsection("Elasticity");
     degree      = prm.get_integer("Degree");
-    formulation = prm.get("Formulation") == "mixed" ? Formulation::mixed :
-                                                      Formulation::displacement;
+    const std::string formulation_name = prm.get("Formulation");
+    formulation = formulation_name == "mixed"    ? Formulation::mixed :
+                  formulation_name == "enhanced" ? Formulation::enhanced :
+                                                   Formulation::displacement;
+
     const std::string s = prm.get("Sides");
     sides               = s == "free"  ? SideCondition::free :
                           s == "fixed" ? SideCondition::fixed :
@@ -82,5 +88,9 @@ namespace ssc
     smoother_sweeps       = prm.get_integer("Smoother sweeps");
     prm.leave_subsection();
     prm.leave_subsection();
+    AssertThrow(formulation != Formulation::enhanced || degree == 1,
+                ExcMessage("Elasticity/Formulation = enhanced (incompatible "
+                           "modes) is a Q1 element: set Elasticity/Degree = "
+                           "1."));
   }
 } // namespace ssc

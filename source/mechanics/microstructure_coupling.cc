@@ -8,6 +8,12 @@ namespace ssc
                                                  TimerOutput        &timer,
                                                  ConditionalOStream &pcout)
     : parameters(parameters)
+    , septum_material{parameters.embedded.septum_youngs_modulus,
+                      parameters.embedded.septum_poisson_ratio,
+                      parameters.embedded.septum_thickness}
+    , ligament_material{parameters.embedded.ligament_youngs_modulus,
+                        0.,
+                        parameters.embedded.ligament_area()}
     , mesh(mesh)
     , elasticity(elasticity)
     , timer(timer)
@@ -30,6 +36,32 @@ namespace ssc
   } // namespace
 
 
+  template <int dim>
+  std::unique_ptr<EmbeddedElasticity>
+  MicrostructureCoupling::embed(const Triangulation<dim, 3> &mesh,
+                                const EmbeddedKind           kind,
+                                const EmbeddedMaterial &     material,
+                                const unsigned int           n_points,
+                                double &                     covered,
+                                double &                     total)
+  {
+    Timer      clip_timer;
+    const auto quadrature =
+      clipped_quadrature(mesh, *locator, n_points, covered);
+    clip_seconds += clip_timer.wall_time();
+    total = measure(mesh);
+    auto stiffness = std::make_unique<EmbeddedElasticity>(
+      kind,
+      quadrature,
+      [material](types::material_id) { return material; },
+      elasticity.get_fe(),
+      elasticity.get_mapping(),
+      locator->communicator());
+    elasticity.attach(*stiffness);
+    return stiffness;
+  }
+
+
   void
   MicrostructureCoupling::setup()
   {
@@ -49,29 +81,16 @@ namespace ssc
     }
 
     TimerOutput::Scope t(timer, "embedding");
-    const MPI_Comm     communicator = mesh.triangulation().get_communicator();
     locator = std::make_unique<PointLocator>(mesh.triangulation(),
                                              elasticity.get_mapping());
     if (e.septa_stiffness && microstructure->septa_mesh().n_active_cells() > 0)
       {
-        const EmbeddedMaterial material = {e.septum_youngs_modulus,
-                                           e.septum_poisson_ratio,
-                                           e.septum_thickness};
-        Timer                  clip_timer;
-        const auto quadrature = clipped_quadrature(microstructure->septa_mesh(),
-                                                   *locator,
-                                                   e.septum_quadrature,
-                                                   septa_area_covered);
-        clip_seconds += clip_timer.wall_time();
-        septa_area = measure(microstructure->septa_mesh());
-        septa      = std::make_unique<EmbeddedElasticity>(
-          EmbeddedKind::membrane,
-          quadrature,
-          [material](types::material_id) { return material; },
-          elasticity.get_fe(),
-          elasticity.get_mapping(),
-          communicator);
-        elasticity.attach(*septa);
+        septa = embed(microstructure->septa_mesh(),
+                      EmbeddedKind::membrane,
+                      septum_material,
+                      e.septum_quadrature,
+                      septa_area_covered,
+                      septa_area);
         septa_writer =
           std::make_unique<EmbeddedFieldWriter<2>>(microstructure->septa_mesh(),
                                                    *locator);
@@ -79,25 +98,12 @@ namespace ssc
     if (e.ligament_stiffness &&
         microstructure->ligament_mesh().n_active_cells() > 0)
       {
-        const EmbeddedMaterial material = {e.ligament_youngs_modulus,
-                                           0.,
-                                           e.ligament_area()};
-        Timer                  clip_timer;
-        const auto             quadrature =
-          clipped_quadrature(microstructure->ligament_mesh(),
-                             *locator,
-                             e.ligament_quadrature,
-                             ligament_length_covered);
-        clip_seconds += clip_timer.wall_time();
-        ligament_length = measure(microstructure->ligament_mesh());
-        cables          = std::make_unique<EmbeddedElasticity>(
-          EmbeddedKind::cable,
-          quadrature,
-          [material](types::material_id) { return material; },
-          elasticity.get_fe(),
-          elasticity.get_mapping(),
-          communicator);
-        elasticity.attach(*cables);
+        cables          = embed(microstructure->ligament_mesh(),
+                       EmbeddedKind::cable,
+                       ligament_material,
+                       e.ligament_quadrature,
+                       ligament_length_covered,
+                       ligament_length);
         ligament_writer = std::make_unique<EmbeddedFieldWriter<1>>(
           microstructure->ligament_mesh(), *locator);
       }
@@ -114,13 +120,10 @@ namespace ssc
                                 const unsigned int step,
                                 const double       time) const
   {
-    const EmbeddedParameters &e = parameters.embedded;
     if (septa)
       {
-        const EmbeddedMaterial material = {e.septum_youngs_modulus,
-                                           e.septum_poisson_ratio,
-                                           e.septum_thickness};
-        const std::string      file =
+        const EmbeddedMaterial &material = septum_material;
+        const std::string       file =
           "septa_" + Utilities::int_to_string(step, 4) + ".vtu";
         septa_writer->write(
           output.path(file),
@@ -139,10 +142,8 @@ namespace ssc
       }
     if (cables)
       {
-        const EmbeddedMaterial material = {e.ligament_youngs_modulus,
-                                           0.,
-                                           e.ligament_area()};
-        const std::string      file =
+        const EmbeddedMaterial &material = ligament_material;
+        const std::string       file =
           "ligaments_" + Utilities::int_to_string(step, 4) + ".vtu";
         ligament_writer->write(
           output.path(file),

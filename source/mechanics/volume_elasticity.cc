@@ -20,6 +20,7 @@
 #include <ssc/mechanics/linear_elastic_material.h>
 #include <ssc/mechanics/volume_elasticity.h>
 
+#include <array>
 #include <limits>
 #include <map>
 
@@ -317,37 +318,87 @@ namespace ssc
   }
 
 
+  namespace
+  {
+    /**
+     * Gradients, at unit point @p xi of a cell with Jacobian determinant
+     * @p det_J there, of the three Wilson bubbles P_d = 4 xi_d (1 - xi_d)
+     * taken with the centre Jacobian @p J0 (Taylor's modification:
+     * (det J0 / det J) J0^{-T} grad_xi P_d), so that they integrate to zero
+     * over the cell and the element passes the patch test when distorted.
+     */
+    std::array<Tensor<1, 3>, 3>
+    incompatible_mode_gradients(const Tensor<2, 3> &J0,
+                                const Point<3> &    xi,
+                                const double        det_J)
+    {
+      const Tensor<2, 3> J0_inverse_transpose = transpose(invert(J0));
+      const double       ratio                = determinant(J0) / det_J;
+      std::array<Tensor<1, 3>, 3> gradients;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          Tensor<1, 3> reference;
+          reference[d] = 4. * (1. - 2. * xi[d]);
+          gradients[d] = ratio * (J0_inverse_transpose * reference);
+        }
+      return gradients;
+    }
+
+    /// Jacobian of the trilinear map of a hexahedron at its centre.
+    Tensor<2, 3>
+    centre_jacobian(const DoFHandler<3>::active_cell_iterator &cell)
+    {
+      Tensor<2, 3> J;
+      for (unsigned int v = 0; v < 8; ++v)
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            // +1/4 on the vertices with xi_d = 1, -1/4 on those with 0
+            const double sign = ((v >> d) & 1) ? 0.25 : -0.25;
+            for (unsigned int i = 0; i < 3; ++i)
+              J[i][d] += sign * cell->vertex(v)[i];
+          }
+      return J;
+    }
+  } // namespace
+
+
   void
   VolumeElasticity::assemble_cell(
     const typename DoFHandler<3>::active_cell_iterator &cell,
-    FEValues<3>                                        &fe_values,
-    const Function<3>                                  *body_force,
-    FullMatrix<double>                                 &cell_matrix,
-    Vector<double>                                     &cell_rhs) const
+    FEValues<3> &                                       fe_values,
+    const Function<3> *                                 body_force,
+    FullMatrix<double> &                                cell_matrix,
+    Vector<double> &                                    cell_rhs) const
   {
     fe_values.reinit(cell);
-    const Layer                     &layer = layers.layer(cell->material_id());
+    const Layer &layer = layers.layer(cell->material_id());
     const LinearElasticMaterial      material(layer.youngs_modulus,
                                          layer.poisson_ratio);
     const unsigned int               n_dofs = fe.n_dofs_per_cell();
     const unsigned int               n_q    = fe_values.n_quadrature_points;
     const FEValuesExtractors::Vector displacement(0);
-    const bool mixed = parameters.formulation == Formulation::mixed;
+    const bool enhanced = parameters.formulation == Formulation::enhanced;
+    const bool mixed =
+      parameters.formulation == Formulation::mixed || enhanced;
+    // the strain modes: the shape functions, then (enhanced) the nine
+    // incompatible modes e_c P_d, condensed out at the end
+    const unsigned int n_modes = n_dofs + (enhanced ? 9 : 0);
 
-    cell_matrix = 0;
-    cell_rhs    = 0;
+    cell_rhs = 0;
+    FullMatrix<double> matrix(n_modes, n_modes);
 
     // Projection space of the volumetric strain (mixed): P_{p-1} on the
     // cell, centred and scaled for conditioning.
     const unsigned int  n_p    = (parameters.degree == 1 ? 1 : 4);
     const Point<3>      centre = cell->center();
     const double        scale  = 1. / cell->diameter();
-    FullMatrix<double>  mass(n_p, n_p), coupling(n_p, n_dofs);
+    FullMatrix<double>  mass(n_p, n_p), coupling(n_p, n_modes);
     std::vector<double> q_basis(n_p);
 
-    std::vector<SymmetricTensor<2, 3>> eps(n_dofs);
-    std::vector<double>                div(n_dofs);
+    std::vector<SymmetricTensor<2, 3>> eps(n_modes);
+    std::vector<double>                div(n_modes);
     Vector<double>                     force(3);
+    const Tensor<2, 3> J0 = enhanced ? centre_jacobian(cell) : Tensor<2, 3>();
 
     for (unsigned int q = 0; q < n_q; ++q)
       {
@@ -357,12 +408,25 @@ namespace ssc
             eps[i] = fe_values[displacement].symmetric_gradient(i, q);
             div[i] = trace(eps[i]);
           }
+        if (enhanced)
+          {
+            const auto g = incompatible_mode_gradients(
+              J0, cell_quadrature.point(q), JxW / cell_quadrature.weight(q));
+            for (unsigned int d = 0; d < 3; ++d)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  Tensor<2, 3> grad;
+                  grad[c]                   = g[d];
+                  eps[n_dofs + 3 * d + c] = symmetrize(grad);
+                  div[n_dofs + 3 * d + c] = g[d][c];
+                }
+          }
         const double lambda_q = mixed ? 0. : material.lambda;
-        for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int i = 0; i < n_modes; ++i)
           for (unsigned int j = 0; j <= i; ++j)
-            cell_matrix(i, j) += (2. * material.mu * (eps[i] * eps[j]) +
-                                  lambda_q * div[i] * div[j]) *
-                                 JxW;
+            matrix(i, j) += (2. * material.mu * (eps[i] * eps[j]) +
+                             lambda_q * div[i] * div[j]) *
+                            JxW;
 
         if (body_force != nullptr)
           {
@@ -384,28 +448,52 @@ namespace ssc
               {
                 for (unsigned int b = 0; b < n_p; ++b)
                   mass(a, b) += q_basis[a] * q_basis[b] * JxW;
-                for (unsigned int i = 0; i < n_dofs; ++i)
+                for (unsigned int i = 0; i < n_modes; ++i)
                   coupling(a, i) += q_basis[a] * div[i] * JxW;
               }
           }
       }
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      for (unsigned int j = i + 1; j < n_dofs; ++j)
-        cell_matrix(i, j) = cell_matrix(j, i);
-
-    for (const CellContribution *contribution : contributions)
-      contribution->add_to_cell(cell, cell_matrix, cell_rhs);
+    for (unsigned int i = 0; i < n_modes; ++i)
+      for (unsigned int j = i + 1; j < n_modes; ++j)
+        matrix(i, j) = matrix(j, i);
 
     if (mixed)
       {
         // lambda * B^T M^{-1} B: the penalty on the projected divergence.
         mass.gauss_jordan();
-        FullMatrix<double> m_inv_b(n_p, n_dofs);
+        FullMatrix<double> m_inv_b(n_p, n_modes);
         mass.mmult(m_inv_b, coupling);
-        FullMatrix<double> volumetric(n_dofs, n_dofs);
+        FullMatrix<double> volumetric(n_modes, n_modes);
         coupling.Tmmult(volumetric, m_inv_b);
-        cell_matrix.add(material.lambda, volumetric);
+        matrix.add(material.lambda, volumetric);
       }
+
+    if (enhanced)
+      {
+        // static condensation of the incompatible modes (they carry no
+        // load): K = K_uu - K_ua K_aa^{-1} K_au
+        const unsigned int n_a = n_modes - n_dofs;
+        FullMatrix<double> K_ua(n_dofs, n_a), K_aa(n_a, n_a);
+        for (unsigned int i = 0; i < n_modes; ++i)
+          for (unsigned int j = n_dofs; j < n_modes; ++j)
+            (i < n_dofs ? K_ua(i, j - n_dofs) : K_aa(i - n_dofs, j - n_dofs)) =
+              matrix(i, j);
+        K_aa.gauss_jordan();
+        FullMatrix<double> K_aa_inv_K_au(n_a, n_dofs);
+        K_aa.mTmult(K_aa_inv_K_au, K_ua);
+        FullMatrix<double> correction(n_dofs, n_dofs);
+        K_ua.mmult(correction, K_aa_inv_K_au);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            cell_matrix(i, j) = matrix(i, j) - correction(i, j);
+      }
+    else
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          cell_matrix(i, j) = matrix(i, j);
+
+    for (const CellContribution *contribution : contributions)
+      contribution->add_to_cell(cell, cell_matrix, cell_rhs);
   }
 
 
@@ -508,10 +596,10 @@ namespace ssc
   VolumeElasticity::solve()
   {
     TimerOutput::Scope t(timer, "solve");
-    setup_preconditioner();
-
     TrilinosWrappers::MPI::Vector solution(locally_owned_dofs,
                                            mpi_communicator);
+    setup_preconditioner();
+
     solution = locally_relevant_solution; // warm start
     constraints.set_zero(solution);
     const double  target = parameters.tolerance * system_rhs.l2_norm();

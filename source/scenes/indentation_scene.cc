@@ -171,9 +171,7 @@ namespace ssc
     }
     pcout << "Degrees of freedom: " << elasticity.n_dofs() << " (Q"
           << parameters.elasticity.degree << ", "
-          << (parameters.elasticity.formulation == Formulation::mixed ?
-                "mixed" :
-                "displacement")
+          << to_string(parameters.elasticity.formulation)
           << " formulation)" << std::endl;
 
     MicrostructureCoupling coupling(parameters, mesh, elasticity, timer, pcout);
@@ -256,10 +254,13 @@ namespace ssc
         {
           const double previous = step == 0 ? 1. : loads[step - 1];
           elasticity.scale_solution(loads[step] / previous);
-          const std::string file =
-            elasticity.write_vtu(output.directory(), "volume", step + 1);
-          output.add_pvd_record("volume", forces[step], file);
-          coupling.write(output, step + 1, forces[step]);
+          if (run.write_fields)
+            {
+              const std::string file =
+                elasticity.write_vtu(output.directory(), "volume", step + 1);
+              output.add_pvd_record("volume", forces[step], file);
+              coupling.write(output, step + 1, forces[step]);
+            }
           pcout << "Load step " << step + 1 << " of " << loads.size()
                 << ": force " << std::setprecision(6) << forces[step]
                 << " N, depth " << depths[step] << " mm" << std::endl;
@@ -301,10 +302,7 @@ namespace ssc
     summary["embedded"]       = coupling.embedded_summary();
     summary["discretisation"] = {{"degree", parameters.elasticity.degree},
                                  {"formulation",
-                                  parameters.elasticity.formulation ==
-                                      Formulation::mixed ?
-                                    "mixed" :
-                                    "displacement"},
+                                  to_string(parameters.elasticity.formulation)},
                                  {"material_model", "linear"}};
     std::vector<unsigned int> per_step(loads.size(), 0);
     per_step[0]        = report.iterations;

@@ -7,14 +7,26 @@ namespace ssc
 {
   using namespace dealii;
 
-  /// Volume discretisation: pure displacement, or displacement with the
+  /// Volume discretisation: pure displacement; displacement with the
   /// volumetric strain projected onto discontinuous P_{p-1} per cell
-  /// (B-bar; the statically condensed Q_p-P_{p-1}^disc mixed method).
+  /// (B-bar; the statically condensed Q_p-P_{p-1}^disc mixed method); or
+  /// (Q1 only) that plus Wilson-Taylor incompatible modes, which remove the
+  /// shear locking of thin layers in bending.
   enum class Formulation
   {
     displacement,
-    mixed
+    mixed,
+    enhanced
   };
+
+  /// The prm spelling of @p formulation.
+  inline const char *
+  to_string(const Formulation formulation)
+  {
+    return formulation == Formulation::mixed    ? "mixed" :
+           formulation == Formulation::enhanced ? "enhanced" :
+                                                  "displacement";
+  }
 
   /// How the lateral sides of the patch are held.
   enum class SideCondition

@@ -55,7 +55,20 @@ namespace ssc
     }
 
   private:
-    const Parameters   &parameters;
+    /// Splits @p mesh along the background cells, attaches its stiffness to
+    /// the volume elasticity, and returns it; @p covered and @p total are
+    /// the measure in the quadrature and of the mesh.
+    template <int dim>
+    std::unique_ptr<EmbeddedElasticity>
+    embed(const Triangulation<dim, 3> &mesh,
+          const EmbeddedKind           kind,
+          const EmbeddedMaterial      &material,
+          const unsigned int           n_points,
+          double                      &covered,
+          double                      &total);
+
+    const Parameters      &parameters;
+    const EmbeddedMaterial septum_material, ligament_material;
     BackgroundMesh     &mesh;
     VolumeElasticity   &elasticity;
     TimerOutput        &timer;
