@@ -421,11 +421,14 @@ namespace ssc
                   div[n_dofs + 3 * d + c] = g[d][c];
                 }
           }
-        const double lambda_q = mixed ? 0. : material.lambda;
+        // 2 mu dev(eps):dev(eps) + kappa div div, kappa = lambda + 2 mu / 3;
+        // the mixed formulations project the divergence instead (B-bar)
+        const double kappa_q = mixed ? 0. : material.lambda + 2. / 3. * material.mu;
         for (unsigned int i = 0; i < n_modes; ++i)
           for (unsigned int j = 0; j <= i; ++j)
-            matrix(i, j) += (2. * material.mu * (eps[i] * eps[j]) +
-                             lambda_q * div[i] * div[j]) *
+            matrix(i, j) += (2. * material.mu *
+                               (eps[i] * eps[j] - div[i] * div[j] / 3.) +
+                             kappa_q * div[i] * div[j]) *
                             JxW;
 
         if (body_force != nullptr)
@@ -459,13 +462,14 @@ namespace ssc
 
     if (mixed)
       {
-        // lambda * B^T M^{-1} B: the penalty on the projected divergence.
+        // kappa * B^T M^{-1} B: the bulk modulus on the projected divergence
+        // (B-bar: the volumetric strain is replaced by its projection).
         mass.gauss_jordan();
         FullMatrix<double> m_inv_b(n_p, n_modes);
         mass.mmult(m_inv_b, coupling);
         FullMatrix<double> volumetric(n_modes, n_modes);
         coupling.Tmmult(volumetric, m_inv_b);
-        matrix.add(material.lambda, volumetric);
+        matrix.add(material.lambda + 2. / 3. * material.mu, volumetric);
       }
 
     if (enhanced)
