@@ -199,6 +199,14 @@ namespace ssc
                           "Height-to-width ratio of the lobules: > 1 gives "
                           "the vertically elongated, palisade-like lobules of "
                           "the SAT, < 1 the flat lobules of the DAT.");
+        prm.declare_entry("Material model",
+                          "linear",
+                          Patterns::Selection("linear|neo-Hookean"),
+                          "linear: small-strain isotropic elasticity. "
+                          "neo-Hookean: compressible neo-Hookean (finite "
+                          "strain, isochoric/volumetric split with the same "
+                          "small-strain moduli); any nonlinear layer makes the "
+                          "scene solve with Newton's method and load steps.");
         prm.declare_entry("Grading",
                           "1",
                           Patterns::Double(0.1, 10),
@@ -249,6 +257,8 @@ namespace ssc
                   prm.get_double("Grading"),
                   prm.get_double("Lobule diameter"),
                   prm.get_double("Lobule vertical stretch"));
+        if (prm.get("Material model") == "neo-Hookean")
+          layers.back().model = MaterialModel::neo_hookean;
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -317,6 +327,16 @@ namespace ssc
                 AssertThrow(false, ExcMessage(msg.str()));
               }
           }
+  }
+
+
+  bool
+  LayerStack::nonlinear() const
+  {
+    for (const auto &layer : layers)
+      if (layer.model != MaterialModel::linear)
+        return true;
+    return false;
   }
 
 

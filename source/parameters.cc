@@ -185,6 +185,7 @@ namespace ssc
     PunchParameters::declare_parameters(prm);
     MicrostructureParameters::declare_parameters(prm);
     EmbeddedParameters::declare_parameters(prm);
+    NewtonParameters::declare_parameters(prm);
   }
 
 
@@ -228,6 +229,7 @@ namespace ssc
     punch.parse_parameters(prm);
     microstructure.parse_parameters(prm);
     embedded.parse_parameters(prm);
+    newton.parse_parameters(prm);
     check_consistency();
   }
 

@@ -8,10 +8,10 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
 
-#include <iostream>
-
 #include <ssc/background_mesh.h>
 #include <ssc/mechanics/volume_elasticity.h>
+
+#include <iostream>
 
 #include "tests.h"
 
@@ -46,8 +46,8 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
   ssc::LayerStack layers;
-  layers.add_layer("block", ssc::LayerKind::deep, "2 + 0.3*x + 0.2*y", 1., 0.45,
-                   4);
+  layers.add_layer(
+    "block", ssc::LayerKind::deep, "2 + 0.3*x + 0.2*y", 1., 0.45, 4);
   ssc::MeshParameters mesh_parameters;
   mesh_parameters.patch_length_x  = 2;
   mesh_parameters.patch_length_y  = 2;
@@ -63,9 +63,11 @@ main(int argc, char **argv)
       ssc::ElasticityParameters parameters;
       parameters.formulation = formulation;
       parameters.tolerance   = 1e-14;
-      TimerOutput        timer(MPI_COMM_WORLD, std::cout, TimerOutput::never,
+      TimerOutput           timer(MPI_COMM_WORLD,
+                        std::cout,
+                        TimerOutput::never,
                         TimerOutput::wall_times);
-      ConditionalOStream pcout(std::cout, false);
+      ConditionalOStream    pcout(std::cout, false);
       ssc::VolumeElasticity elasticity(mesh, layers, parameters, timer, pcout);
       elasticity.setup_dofs();
       std::vector<ssc::DirichletCondition> conditions;

@@ -13,6 +13,13 @@ namespace ssc
 {
   using namespace dealii;
 
+  /// Constitutive law of a layer.
+  enum class MaterialModel
+  {
+    linear,
+    neo_hookean
+  };
+
   /// Anatomical role of a layer; decides which microstructure it may carry.
   enum class LayerKind
   {
@@ -48,6 +55,8 @@ namespace ssc
     double lobule_diameter = 0;
     /// Height-to-width ratio of the lobules (> 1: palisade-like SAT).
     double lobule_stretch = 1;
+    /// Small-strain linear elasticity or compressible neo-Hookean.
+    MaterialModel model = MaterialModel::linear;
 
     /// Whether this layer can carry lobules (kind SAT or DAT).
     bool
@@ -133,6 +142,17 @@ namespace ssc
     /// Index of the layer containing the point (x, y, z), z <= 0.
     unsigned int
     layer_at(const Point<3> &p) const;
+
+    /// Sets the material model of layer @p i (tests, benchmarks).
+    void
+    set_model(const unsigned int i, const MaterialModel model)
+    {
+      layers[i].model = model;
+    }
+
+    /// Whether any layer has a nonlinear material model.
+    bool
+    nonlinear() const;
 
     /// Adds a layer programmatically (tests, benchmarks).
     void

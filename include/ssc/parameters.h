@@ -7,6 +7,7 @@
 #include <ssc/layer_stack.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/embedded_parameters.h>
+#include <ssc/mechanics/newton_parameters.h>
 #include <ssc/microstructure/microstructure_parameters.h>
 #include <ssc/scenes/punch_parameters.h>
 
@@ -72,6 +73,7 @@ namespace ssc
     PunchParameters          punch;
     MicrostructureParameters microstructure;
     EmbeddedParameters       embedded;
+    NewtonParameters         newton;
 
   private:
     static void

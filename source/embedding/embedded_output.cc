@@ -43,9 +43,9 @@ namespace ssc
                                   const VolumeElasticity       &elasticity,
                                   const std::vector<CellField> &fields) const
   {
-    std::vector<Tensor<1, 3>>          u;
-    std::vector<SymmetricTensor<2, 3>> strain;
-    elasticity.evaluate_at(locations, u, strain);
+    std::vector<Tensor<1, 3>> u;
+    std::vector<Tensor<2, 3>> gradient;
+    elasticity.evaluate_at(locations, u, gradient);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
 
@@ -61,7 +61,8 @@ namespace ssc
         patch.reference_cell = reference_cell;
         patch.n_subdivisions = 1;
         patch.data.reinit(3 + fields.size(), n_vertices);
-        const SymmetricTensor<2, 3> &eps = strain[first_centre + c];
+        const SymmetricTensor<2, 3> eps =
+          symmetrize(gradient[first_centre + c]);
         for (unsigned int v = 0; v < n_vertices; ++v, ++vertex)
           {
             patch.vertices[v] = cell->vertex(v);

@@ -69,7 +69,7 @@ namespace ssc
   ElasticityParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Elasticity");
-    degree      = prm.get_integer("Degree");
+    degree                             = prm.get_integer("Degree");
     const std::string formulation_name = prm.get("Formulation");
     formulation = formulation_name == "mixed"    ? Formulation::mixed :
                   formulation_name == "enhanced" ? Formulation::enhanced :

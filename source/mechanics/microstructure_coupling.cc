@@ -40,16 +40,16 @@ namespace ssc
   std::unique_ptr<EmbeddedElasticity>
   MicrostructureCoupling::embed(const Triangulation<dim, 3> &mesh,
                                 const EmbeddedKind           kind,
-                                const EmbeddedMaterial &     material,
+                                const EmbeddedMaterial      &material,
                                 const unsigned int           n_points,
-                                double &                     covered,
-                                double &                     total)
+                                double                      &covered,
+                                double                      &total)
   {
     Timer      clip_timer;
     const auto quadrature =
       clipped_quadrature(mesh, *locator, n_points, covered);
     clip_seconds += clip_timer.wall_time();
-    total = measure(mesh);
+    total          = measure(mesh);
     auto stiffness = std::make_unique<EmbeddedElasticity>(
       kind,
       quadrature,

@@ -18,6 +18,7 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <ssc/mechanics/linear_elastic_material.h>
+#include <ssc/mechanics/neo_hookean_material.h>
 #include <ssc/mechanics/volume_elasticity.h>
 
 #include <array>
@@ -75,13 +76,12 @@ namespace ssc
 
 
   void
-  VolumeElasticity::evaluate_at(
-    const std::vector<PointLocation>   &locations,
-    std::vector<Tensor<1, 3>>          &displacements,
-    std::vector<SymmetricTensor<2, 3>> &strains) const
+  VolumeElasticity::evaluate_at(const std::vector<PointLocation> &locations,
+                                std::vector<Tensor<1, 3>>        &displacements,
+                                std::vector<Tensor<2, 3>> &gradients) const
   {
     displacements.assign(locations.size(), Tensor<1, 3>());
-    strains.assign(locations.size(), SymmetricTensor<2, 3>());
+    gradients.assign(locations.size(), Tensor<2, 3>());
     // group the points by cell: one FEValues per cell
     std::map<unsigned int, std::vector<unsigned int>> by_cell;
     for (unsigned int k = 0; k < locations.size(); ++k)
@@ -103,34 +103,29 @@ namespace ssc
           locations[points[0]].cell->index(),
           &dof_handler);
         fe_values.reinit(cell);
-        std::vector<Tensor<1, 3>>          u(units.size());
-        std::vector<SymmetricTensor<2, 3>> eps(units.size());
+        std::vector<Tensor<1, 3>> u(units.size());
+        std::vector<Tensor<2, 3>> grad(units.size());
         fe_values[displacement].get_function_values(locally_relevant_solution,
                                                     u);
-        fe_values[displacement].get_function_symmetric_gradients(
-          locally_relevant_solution, eps);
+        fe_values[displacement].get_function_gradients(
+          locally_relevant_solution, grad);
         for (unsigned int q = 0; q < points.size(); ++q)
           {
             displacements[points[q]] = u[q];
-            strains[points[q]]       = eps[q];
+            gradients[points[q]]     = grad[q];
           }
       }
     // each point is owned by exactly one rank: the sum gathers them all
-    std::vector<double> values(9 * locations.size());
+    std::vector<double> values(12 * locations.size());
     for (unsigned int k = 0; k < locations.size(); ++k)
-      for (unsigned int d = 0; d < 9; ++d)
-        values[9 * k + d] =
-          d < 3 ?
-            displacements[k][d] :
-            strains[k][SymmetricTensor<2, 3>::unrolled_to_component_indices(d -
-                                                                            3)];
+      for (unsigned int d = 0; d < 12; ++d)
+        values[12 * k + d] =
+          d < 3 ? displacements[k][d] : gradients[k][(d - 3) / 3][(d - 3) % 3];
     Utilities::MPI::sum(values, mpi_communicator, values);
     for (unsigned int k = 0; k < locations.size(); ++k)
-      for (unsigned int d = 0; d < 9; ++d)
-        (d < 3 ?
-           displacements[k][d] :
-           strains[k][SymmetricTensor<2, 3>::unrolled_to_component_indices(
-             d - 3)]) = values[9 * k + d];
+      for (unsigned int d = 0; d < 12; ++d)
+        (d < 3 ? displacements[k][d] : gradients[k][(d - 3) / 3][(d - 3) % 3]) =
+          values[12 * k + d];
   }
 
 
@@ -220,6 +215,7 @@ namespace ssc
     // condition's dofs are remembered for its reaction force.
     constrained_dofs_per_condition.assign(conditions.size() + ties.size(),
                                           IndexSet(dof_handler.n_dofs()));
+    dirichlet_values.clear();
     for (unsigned int c = 0; c < conditions.size(); ++c)
       {
         const DirichletCondition &condition = conditions[c];
@@ -232,8 +228,10 @@ namespace ssc
                                 (condition.region && !condition.region(p)))
                               return;
                             constraints.add_line(dof);
-                            constraints.set_inhomogeneity(
-                              dof, condition.values->value(p, component));
+                            const double value =
+                              condition.values->value(p, component);
+                            constraints.set_inhomogeneity(dof, value);
+                            dirichlet_values.emplace_back(dof, value);
                             constrained_dofs_per_condition[c].add_index(dof);
                           });
         constrained_dofs_per_condition[c].compress();
@@ -261,6 +259,20 @@ namespace ssc
         tied.compress();
       }
     constraints.close();
+    homogeneous_constraints.clear();
+    homogeneous_constraints.reinit(locally_relevant_dofs);
+    homogeneous_constraints.merge(hanging_node_constraints);
+    for (const auto &[dof, value] : dirichlet_values)
+      homogeneous_constraints.add_line(dof);
+    for (unsigned int t = 0; t < ties.size(); ++t)
+      for (const auto dof :
+           constrained_dofs_per_condition[conditions.size() + t])
+        if (dof != tie_masters[t])
+          {
+            homogeneous_constraints.add_line(dof);
+            homogeneous_constraints.add_entry(dof, tie_masters[t], 1.);
+          }
+    homogeneous_constraints.close();
 
     // Built directly in Trilinos' compressed format: a DynamicSparsityPattern
     // would double the peak memory of this step.
@@ -277,6 +289,182 @@ namespace ssc
     sparsity.compress();
     system_matrix.reinit(sparsity);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    newton_update.reinit(locally_owned_dofs, mpi_communicator);
+  }
+
+
+  void
+  VolumeElasticity::build_increment_constraints()
+  {
+    // the homogeneous constraints, with the rest of the way to the
+    // prescribed values on the Dirichlet dofs (hanging-node and tie chains
+    // resolved again by close())
+    increment_constraints.clear();
+    increment_constraints.reinit(locally_relevant_dofs);
+    increment_constraints.merge(hanging_node_constraints);
+    for (const auto &[dof, value] : dirichlet_values)
+      {
+        increment_constraints.add_line(dof);
+        increment_constraints.set_inhomogeneity(
+          dof, dirichlet_scale * value - locally_relevant_solution[dof]);
+      }
+    for (const auto &line : homogeneous_constraints.get_lines())
+      if (!increment_constraints.is_constrained(line.index))
+        {
+          increment_constraints.add_line(line.index);
+          increment_constraints.add_entries(line.index, line.entries);
+        }
+    increment_constraints.close();
+  }
+
+
+  double
+  VolumeElasticity::dirichlet_gap() const
+  {
+    double gap = 0;
+    for (const auto &[dof, value] : dirichlet_values)
+      gap = std::max(gap,
+                     std::abs(dirichlet_scale * value -
+                              locally_relevant_solution[dof]));
+    return Utilities::MPI::max(gap, mpi_communicator);
+  }
+
+
+  void
+  VolumeElasticity::set_dirichlet_scale(const double factor)
+  {
+    dirichlet_scale = factor;
+    // the homogeneous constraints with the scaled prescribed values (the
+    // chains through hanging nodes and ties are resolved again by close())
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    constraints.merge(hanging_node_constraints);
+    for (const auto &[dof, value] : dirichlet_values)
+      {
+        constraints.add_line(dof);
+        constraints.set_inhomogeneity(dof, factor * value);
+      }
+    for (const auto &line : homogeneous_constraints.get_lines())
+      if (!constraints.is_constrained(line.index))
+        {
+          constraints.add_line(line.index);
+          constraints.add_entries(line.index, line.entries);
+        }
+    constraints.close();
+  }
+
+
+  void
+  VolumeElasticity::apply_constraints_to_solution()
+  {
+    TrilinosWrappers::MPI::Vector owned(locally_owned_dofs, mpi_communicator);
+    owned = locally_relevant_solution;
+    constraints.distribute(owned);
+    locally_relevant_solution = owned;
+  }
+
+
+  double
+  VolumeElasticity::assemble_newton_system(
+    const bool                                                     with_matrix,
+    const std::vector<std::pair<types::global_dof_index, double>> &nodal_forces,
+    const Function<3>                                             *body_force)
+  {
+    TimerOutput::Scope t(timer, "assembly");
+    if (with_matrix)
+      {
+        system_matrix = 0;
+        build_increment_constraints();
+      }
+    system_rhs = 0;
+    FEValues<3>        fe_values(mapping, fe, cell_quadrature, assembly_flags);
+    const unsigned int n = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(n, n);
+    Vector<double>     cell_residual(n), cell_u(n);
+    std::vector<types::global_dof_index> dofs(n);
+    unsigned int                         inverted = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_values(locally_relevant_solution, cell_u);
+          if (!nonlinear_cell(cell,
+                              fe_values,
+                              cell_u,
+                              body_force,
+                              cell_matrix,
+                              cell_residual))
+            {
+              ++inverted;
+              continue;
+            }
+          cell_residual *= -1.;
+          cell->get_dof_indices(dofs);
+          if (with_matrix)
+            increment_constraints.distribute_local_to_global(
+              cell_matrix, cell_residual, dofs, system_matrix, system_rhs);
+          else
+            homogeneous_constraints.distribute_local_to_global(cell_residual,
+                                                               dofs,
+                                                               system_rhs);
+        }
+    if (with_matrix)
+      system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    for (const auto &[dof, force] : nodal_forces)
+      if (locally_owned_dofs.is_element(dof))
+        system_rhs[dof] += force;
+    system_rhs.compress(VectorOperation::add);
+    if (Utilities::MPI::sum(inverted, mpi_communicator) > 0)
+      return std::numeric_limits<double>::infinity();
+    return system_rhs.l2_norm();
+  }
+
+
+  LinearSolveReport
+  VolumeElasticity::solve_newton_update()
+  {
+    newton_update = 0;
+    return solve_linear_system(newton_update, increment_constraints);
+  }
+
+
+  void
+  VolumeElasticity::store_solution()
+  {
+    stored_solution.reinit(locally_owned_dofs, mpi_communicator);
+    stored_solution = locally_relevant_solution;
+  }
+
+
+  void
+  VolumeElasticity::set_solution_from_stored(const double step)
+  {
+    TrilinosWrappers::MPI::Vector owned(stored_solution);
+    owned.add(step, newton_update);
+    locally_relevant_solution = owned;
+  }
+
+
+  void
+  VolumeElasticity::restore_solution()
+  {
+    locally_relevant_solution = stored_solution;
+  }
+
+
+  TrilinosWrappers::MPI::Vector
+  VolumeElasticity::get_solution() const
+  {
+    TrilinosWrappers::MPI::Vector owned(locally_owned_dofs, mpi_communicator);
+    owned = locally_relevant_solution;
+    return owned;
+  }
+
+
+  void
+  VolumeElasticity::set_solution(const TrilinosWrappers::MPI::Vector &owned)
+  {
+    locally_relevant_solution = owned;
   }
 
 
@@ -329,11 +517,11 @@ namespace ssc
      */
     std::array<Tensor<1, 3>, 3>
     incompatible_mode_gradients(const Tensor<2, 3> &J0,
-                                const Point<3> &    xi,
+                                const Point<3>     &xi,
                                 const double        det_J)
     {
-      const Tensor<2, 3> J0_inverse_transpose = transpose(invert(J0));
-      const double       ratio                = determinant(J0) / det_J;
+      const Tensor<2, 3>          J0_inverse_transpose = transpose(invert(J0));
+      const double                ratio = determinant(J0) / det_J;
       std::array<Tensor<1, 3>, 3> gradients;
       for (unsigned int d = 0; d < 3; ++d)
         {
@@ -365,21 +553,20 @@ namespace ssc
   void
   VolumeElasticity::assemble_cell(
     const typename DoFHandler<3>::active_cell_iterator &cell,
-    FEValues<3> &                                       fe_values,
-    const Function<3> *                                 body_force,
-    FullMatrix<double> &                                cell_matrix,
-    Vector<double> &                                    cell_rhs) const
+    FEValues<3>                                        &fe_values,
+    const Function<3>                                  *body_force,
+    FullMatrix<double>                                 &cell_matrix,
+    Vector<double>                                     &cell_rhs) const
   {
     fe_values.reinit(cell);
-    const Layer &layer = layers.layer(cell->material_id());
+    const Layer                     &layer = layers.layer(cell->material_id());
     const LinearElasticMaterial      material(layer.youngs_modulus,
                                          layer.poisson_ratio);
     const unsigned int               n_dofs = fe.n_dofs_per_cell();
     const unsigned int               n_q    = fe_values.n_quadrature_points;
     const FEValuesExtractors::Vector displacement(0);
     const bool enhanced = parameters.formulation == Formulation::enhanced;
-    const bool mixed =
-      parameters.formulation == Formulation::mixed || enhanced;
+    const bool mixed = parameters.formulation == Formulation::mixed || enhanced;
     // the strain modes: the shape functions, then (enhanced) the nine
     // incompatible modes e_c P_d, condensed out at the end
     const unsigned int n_modes = n_dofs + (enhanced ? 9 : 0);
@@ -410,26 +597,29 @@ namespace ssc
           }
         if (enhanced)
           {
-            const auto g = incompatible_mode_gradients(
-              J0, cell_quadrature.point(q), JxW / cell_quadrature.weight(q));
+            const auto g =
+              incompatible_mode_gradients(J0,
+                                          cell_quadrature.point(q),
+                                          JxW / cell_quadrature.weight(q));
             for (unsigned int d = 0; d < 3; ++d)
               for (unsigned int c = 0; c < 3; ++c)
                 {
                   Tensor<2, 3> grad;
-                  grad[c]                   = g[d];
+                  grad[c]                 = g[d];
                   eps[n_dofs + 3 * d + c] = symmetrize(grad);
                   div[n_dofs + 3 * d + c] = g[d][c];
                 }
           }
         // 2 mu dev(eps):dev(eps) + kappa div div, kappa = lambda + 2 mu / 3;
         // the mixed formulations project the divergence instead (B-bar)
-        const double kappa_q = mixed ? 0. : material.lambda + 2. / 3. * material.mu;
+        const double kappa_q =
+          mixed ? 0. : material.lambda + 2. / 3. * material.mu;
         for (unsigned int i = 0; i < n_modes; ++i)
           for (unsigned int j = 0; j <= i; ++j)
-            matrix(i, j) += (2. * material.mu *
-                               (eps[i] * eps[j] - div[i] * div[j] / 3.) +
-                             kappa_q * div[i] * div[j]) *
-                            JxW;
+            matrix(i, j) +=
+              (2. * material.mu * (eps[i] * eps[j] - div[i] * div[j] / 3.) +
+               kappa_q * div[i] * div[j]) *
+              JxW;
 
         if (body_force != nullptr)
           {
@@ -498,6 +688,124 @@ namespace ssc
 
     for (const CellContribution *contribution : contributions)
       contribution->add_to_cell(cell, cell_matrix, cell_rhs);
+  }
+
+
+  bool
+  VolumeElasticity::nonlinear_cell(
+    const typename DoFHandler<3>::active_cell_iterator &cell,
+    FEValues<3>                                        &fe_values,
+    const Vector<double>                               &u,
+    const Function<3>                                  *body_force,
+    FullMatrix<double>                                 &cell_matrix,
+    Vector<double>                                     &cell_residual) const
+  {
+    const Layer &layer = layers.layer(cell->material_id());
+    if (layer.model == MaterialModel::linear)
+      {
+        // r = K u - f (the embedded contributions included)
+        assemble_cell(cell, fe_values, body_force, cell_matrix, cell_residual);
+        cell_residual *= -1.;
+        cell_matrix.vmult_add(cell_residual, u);
+        return true;
+      }
+    AssertThrow(parameters.formulation != Formulation::enhanced,
+                ExcMessage("Elasticity/Formulation = enhanced is for the "
+                           "linear material model only; use mixed with "
+                           "neo-Hookean layers."));
+    const NeoHookeanMaterial material(layer.youngs_modulus,
+                                      layer.poisson_ratio);
+    const bool mean_dilatation = parameters.formulation == Formulation::mixed;
+    fe_values.reinit(cell);
+    const unsigned int n   = fe.n_dofs_per_cell();
+    const unsigned int n_q = fe_values.n_quadrature_points;
+
+    // deformation gradients and, for the mean dilatation, the cell's
+    // current-to-reference volume ratio J_bar
+    std::vector<Tensor<2, 3>> F(n_q, unit_symmetric_tensor<3>());
+    double                    volume = 0, current_volume = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            F[q][c] += u(i) * fe_values.shape_grad_component(i, q, c);
+          }
+        const double J = determinant(F[q]);
+        if (!(J > 0))
+          return false;
+        volume += fe_values.JxW(q);
+        current_volume += J * fe_values.JxW(q);
+      }
+    const double J_bar = current_volume / volume;
+
+    cell_matrix   = 0;
+    cell_residual = 0;
+    std::vector<Tensor<1, 3>>          g(n); // spatial shape gradients
+    std::vector<SymmetricTensor<2, 3>> sym_grad(n), c_sym_grad(n);
+    std::vector<unsigned int>          component(n);
+    std::vector<double>                b(n, 0.); // int J div(phi_i)
+    SymmetricTensor<2, 3>              tau;
+    SymmetricTensor<4, 3>              c_iso;
+    Vector<double>                     force(3);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe.system_to_component_index(i).first;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double       JxW   = fe_values.JxW(q);
+        const double       J     = determinant(F[q]);
+        const Tensor<2, 3> F_inv = invert(F[q]);
+        material.isochoric(F[q], tau, c_iso);
+        const double p = material.pressure(mean_dilatation ? J_bar : J);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            g[i] = transpose(F_inv) *
+                   fe_values.shape_grad_component(i, q, component[i]);
+            Tensor<2, 3> G;
+            G[component[i]]  = g[i];
+            sym_grad[i]      = symmetrize(G);
+            c_sym_grad[i]    = c_iso * sym_grad[i];
+            const double div = g[i][component[i]];
+            cell_residual(i) +=
+              ((tau * g[i])[component[i]] + p * J * div) * JxW;
+            b[i] += J * div * JxW;
+          }
+        const double volumetric_point =
+          mean_dilatation ? 0. : J * J * material.pressure_derivative(J);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int ci    = component[i];
+            const Tensor<1, 3> tau_g = tau * g[i];
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const unsigned int cj = component[j];
+                double             value =
+                  sym_grad[i] * c_sym_grad[j] +
+                  p * J * (g[i][ci] * g[j][cj] - g[i][cj] * g[j][ci]) +
+                  volumetric_point * g[i][ci] * g[j][cj];
+                if (ci == cj)
+                  value += tau_g * g[j];
+                cell_matrix(i, j) += value * JxW;
+              }
+          }
+        if (body_force != nullptr)
+          {
+            body_force->vector_value(fe_values.quadrature_point(q), force);
+            for (unsigned int i = 0; i < n; ++i)
+              cell_residual(i) -=
+                fe_values.shape_value(i, q) * force(component[i]) * JxW;
+          }
+      }
+    if (mean_dilatation)
+      {
+        const double k = material.pressure_derivative(J_bar) / volume;
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            cell_matrix(i, j) += k * b[i] * b[j];
+      }
+    for (const CellContribution *contribution : contributions)
+      contribution->add_to_cell_nonlinear(cell, u, cell_matrix, cell_residual);
+    return true;
   }
 
 
@@ -599,13 +907,23 @@ namespace ssc
   LinearSolveReport
   VolumeElasticity::solve()
   {
-    TimerOutput::Scope t(timer, "solve");
     TrilinosWrappers::MPI::Vector solution(locally_owned_dofs,
                                            mpi_communicator);
-    setup_preconditioner();
+    solution                       = locally_relevant_solution; // warm start
+    const LinearSolveReport report = solve_linear_system(solution, constraints);
+    locally_relevant_solution      = solution;
+    return report;
+  }
 
-    solution = locally_relevant_solution; // warm start
-    constraints.set_zero(solution);
+
+  LinearSolveReport
+  VolumeElasticity::solve_linear_system(
+    TrilinosWrappers::MPI::Vector   &solution,
+    const AffineConstraints<double> &solution_constraints)
+  {
+    TimerOutput::Scope t(timer, "solve");
+    setup_preconditioner();
+    solution_constraints.set_zero(solution);
     const double  target = parameters.tolerance * system_rhs.l2_norm();
     SolverControl control(parameters.max_iterations,
                           std::max(target, 1e-300),
@@ -626,8 +944,7 @@ namespace ssc
                                "); raise Elasticity/Linear solver/Max "
                                "iterations or check the model."));
       }
-    constraints.distribute(solution);
-    locally_relevant_solution = solution;
+    solution_constraints.distribute(solution);
 
     LinearSolveReport report;
     report.iterations     = control.last_step();
@@ -660,7 +977,7 @@ namespace ssc
     FEValues<3>        fe_values(mapping, fe, cell_quadrature, assembly_flags);
     const unsigned int n = fe.n_dofs_per_cell();
     FullMatrix<double> cell_matrix(n, n);
-    Vector<double>     cell_rhs(n), cell_u(n), cell_r(n), cell_w(n);
+    Vector<double>     cell_u(n), cell_r(n), cell_w(n);
     Tensor<1, 3>       force;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -668,10 +985,10 @@ namespace ssc
           cell->get_dof_values(weight, cell_w);
           if (cell_w.linfty_norm() == 0.)
             continue;
-          assemble_cell(cell, fe_values, body_force, cell_matrix, cell_rhs);
+          // r = f_int(u) - f_ext (K u - f for linear layers)
           cell->get_dof_values(locally_relevant_solution, cell_u);
-          cell_matrix.vmult(cell_r, cell_u);
-          cell_r -= cell_rhs;
+          nonlinear_cell(
+            cell, fe_values, cell_u, body_force, cell_matrix, cell_r);
           for (unsigned int i = 0; i < n; ++i)
             force[fe.system_to_component_index(i).first] +=
               cell_r(i) * cell_w(i);

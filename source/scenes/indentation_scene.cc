@@ -5,6 +5,8 @@
 #include <ssc/embedding/point_locator.h>
 #include <ssc/mechanics/linear_elastic_material.h>
 #include <ssc/mechanics/microstructure_coupling.h>
+#include <ssc/mechanics/neo_hookean_material.h>
+#include <ssc/mechanics/newton_solver.h>
 #include <ssc/mechanics/volume_elasticity.h>
 #include <ssc/output.h>
 #include <ssc/scenes/indentation_scene.h>
@@ -12,6 +14,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace ssc
@@ -66,24 +69,42 @@ namespace ssc
     }
 
 
-    /// Writes surface_profile.csv: u_z along y = 0 at the surface, one
-    /// column per load step (the unit-load response scaled).
-    void
-    write_surface_profile(const PunchParameters     &punch,
-                          const double               patch_length,
-                          const PointLocator        &locator,
-                          const VolumeElasticity    &elasticity,
-                          const std::vector<double> &loads,
-                          RunOutput                 &output)
+    /// The points of the surface profile: y = 0, z = 0, centred in x.
+    std::vector<Point<3>>
+    profile_points(const PunchParameters &punch, const double patch_length)
     {
       const double          L = std::min(punch.profile_length, patch_length);
       const unsigned int    n = punch.profile_points;
       std::vector<Point<3>> points;
       for (unsigned int i = 0; i < n; ++i)
         points.emplace_back(-L / 2 + L * i / (n - 1), 0., 0.);
-      std::vector<Tensor<1, 3>>          u;
-      std::vector<SymmetricTensor<2, 3>> strain;
-      elasticity.evaluate_at(locator.locate(points), u, strain);
+      return points;
+    }
+
+
+    /// u_z at @p points for the current solution.
+    std::vector<double>
+    vertical_displacements(const std::vector<PointLocation> &locations,
+                           const VolumeElasticity           &elasticity)
+    {
+      std::vector<Tensor<1, 3>> u;
+      std::vector<Tensor<2, 3>> gradient;
+      elasticity.evaluate_at(locations, u, gradient);
+      std::vector<double> uz(u.size());
+      for (unsigned int i = 0; i < u.size(); ++i)
+        uz[i] = u[i][2];
+      return uz;
+    }
+
+
+    /// Writes surface_profile.csv: x, then u_z per load step.
+    void
+    write_surface_profile(const PunchParameters                  &punch,
+                          const std::vector<Point<3>>            &points,
+                          const std::vector<double>              &loads,
+                          const std::vector<std::vector<double>> &profiles,
+                          RunOutput                              &output)
+    {
       std::ostringstream csv;
       csv << "x_mm";
       for (const double load : loads)
@@ -91,19 +112,46 @@ namespace ssc
                                                        ",uz_mm_at_depth")
             << load;
       csv << '\n' << std::setprecision(8);
-      for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int i = 0; i < points.size(); ++i)
         {
           csv << points[i][0];
-          for (const double load : loads)
-            csv << ',' << load * u[i][2];
+          for (const auto &profile : profiles)
+            csv << ',' << profile[i];
           csv << '\n';
         }
       output.write_text("surface_profile.csv", csv.str());
     }
 
 
+    /// von Mises stress (MPa) of the Cauchy stress of @p layer for the
+    /// displacement gradient @p H.
+    double
+    von_mises_stress(const Layer &layer, const Tensor<2, 3> &H)
+    {
+      if (layer.model == MaterialModel::linear)
+        {
+          const LinearElasticMaterial material(layer.youngs_modulus,
+                                               layer.poisson_ratio);
+          const SymmetricTensor<2, 3> eps = symmetrize(H);
+          return von_mises(material.stress(eps, trace(eps)));
+        }
+      const NeoHookeanMaterial material(layer.youngs_modulus,
+                                        layer.poisson_ratio);
+      const Tensor<2, 3>       F = unit_symmetric_tensor<3>() + H;
+      const double             J = determinant(F);
+      SymmetricTensor<2, 3>    tau;
+      SymmetricTensor<4, 3>    tangent;
+      if (!(J > 0))
+        return std::numeric_limits<double>::quiet_NaN();
+      material.isochoric(F, tau, tangent);
+      return von_mises(
+        (tau + J * material.pressure(J) * unit_symmetric_tensor<3>()) / J);
+    }
+
+
     /// Writes section.csv: displacement and von Mises stress on a grid of
-    /// the plane y = 0 (the unit-load response times @p scale).
+    /// the plane y = 0 (current solution times @p scale; the scale is for
+    /// the linear unit-load response).
     void
     write_section(const Parameters       &parameters,
                   const PointLocator     &locator,
@@ -124,21 +172,19 @@ namespace ssc
           for (unsigned int k = 0; k < nz; ++k)
             points.emplace_back(x, 0., -bottom * k / (nz - 1));
         }
-      std::vector<Tensor<1, 3>>          u;
-      std::vector<SymmetricTensor<2, 3>> strain;
-      elasticity.evaluate_at(locator.locate(points), u, strain);
+      std::vector<Tensor<1, 3>> u;
+      std::vector<Tensor<2, 3>> gradient;
+      elasticity.evaluate_at(locator.locate(points), u, gradient);
       std::ostringstream csv;
       csv << "x_mm,z_mm,layer,ux_mm,uz_mm,von_mises_kPa\n"
           << std::setprecision(7);
       for (unsigned int k = 0; k < points.size(); ++k)
         {
-          const unsigned int          l = layers.layer_at(points[k]);
-          const LinearElasticMaterial material(layers.layer(l).youngs_modulus,
-                                               layers.layer(l).poisson_ratio);
-          const SymmetricTensor<2, 3> eps = scale * strain[k];
+          const unsigned int l = layers.layer_at(points[k]);
           csv << points[k][0] << ',' << points[k][2] << ',' << l << ','
               << scale * u[k][0] << ',' << scale * u[k][2] << ','
-              << 1e3 * von_mises(material.stress(eps, trace(eps))) << '\n';
+              << 1e3 * von_mises_stress(layers.layer(l), scale * gradient[k])
+              << '\n';
         }
       output.write_text("section.csv", csv.str());
     }
@@ -171,8 +217,8 @@ namespace ssc
     }
     pcout << "Degrees of freedom: " << elasticity.n_dofs() << " (Q"
           << parameters.elasticity.degree << ", "
-          << to_string(parameters.elasticity.formulation)
-          << " formulation)" << std::endl;
+          << to_string(parameters.elasticity.formulation) << " formulation)"
+          << std::endl;
 
     MicrostructureCoupling coupling(parameters, mesh, elasticity, timer, pcout);
     coupling.setup();
@@ -208,82 +254,167 @@ namespace ssc
     const unsigned int punch_condition =
       by_force ? conditions.size() : conditions.size() - 1;
 
-    Timer solve_timer(mpi_communicator, true);
     {
       TimerOutput::Scope t(timer, "setup");
       elasticity.setup_system(conditions, ties);
     }
-    elasticity.assemble();
-    if (by_force)
-      elasticity.add_nodal_force(elasticity.master_dof(0), -1.);
-    const LinearSolveReport report = elasticity.solve();
-    // the force on the punch for the unit load, from the residual: under
-    // force control it must equal 1 N (a check of the tie)
-    double unit_force;
-    {
-      TimerOutput::Scope t(timer, "assembly");
-      unit_force = -elasticity.reaction(punch_condition)[2];
-    }
-    const double unit_depth =
-      by_force ? -elasticity.dof_value(elasticity.master_dof(0)) : 1.;
-    const double unit_stiffness = unit_force / unit_depth;
-    const double solve_time     = solve_timer.wall_time();
-    pcout << "Unit load (" << (by_force ? "1 N" : "1 mm")
-          << "): " << std::setprecision(6) << "force " << unit_force
-          << " N, depth " << unit_depth << " mm";
-    if (!run.test_mode)
-      pcout << ", " << report.iterations << " CG iterations";
-    pcout << std::endl;
-    if (by_force && !run.test_mode)
-      pcout << "Force balance of the tied punch: |reaction - 1 N| = "
-            << std::abs(unit_force - 1.) << " N" << std::endl;
-
-    // The load steps: the unit response scaled (linear elasticity).
-    const std::vector<double> loads = punch.loads();
-    std::vector<double>       depths, forces;
-    for (const double load : loads)
-      {
-        // under force control the prescribed force, not the residual
-        forces.push_back(by_force ? load : load * unit_stiffness);
-        depths.push_back(by_force ? load * unit_depth : load);
-      }
     const PointLocator locator(mesh.triangulation(), elasticity.get_mapping());
+    const auto         profile_at =
+      profile_points(punch,
+                     std::min(parameters.mesh.patch_length_x,
+                              parameters.mesh.patch_length_y));
+    const auto                profile_locations = punch.profile_length > 0 ?
+                                                    locator.locate(profile_at) :
+                                                    std::vector<PointLocation>();
+    const std::vector<double> loads             = punch.loads();
+    std::vector<double>       depths, forces, times;
+    std::vector<unsigned int> linear_iterations, newton_iterations, cuts;
+    std::vector<std::vector<double>> profiles;
+    std::vector<std::vector<double>> residual_histories;
+    double                           unit_stiffness = 0, unit_force = 1;
+    const auto write_fields = [&](const unsigned int step, const double time) {
+      if (!run.write_fields)
+        return;
+      const std::string file =
+        elasticity.write_vtu(output.directory(), "volume", step);
+      output.add_pvd_record("volume", time, file);
+      coupling.write(output, step, time);
+    };
+
+    if (!parameters.layers.nonlinear())
+      {
+        // Linear: one solve for the unit load (1 N or 1 mm), the steps by
+        // scaling.
+        Timer solve_timer(mpi_communicator, true);
+        elasticity.assemble();
+        if (by_force)
+          elasticity.add_nodal_force(elasticity.master_dof(0), -1.);
+        const LinearSolveReport report = elasticity.solve();
+        {
+          TimerOutput::Scope t(timer, "assembly");
+          unit_force = -elasticity.reaction(punch_condition)[2];
+        }
+        const double unit_depth =
+          by_force ? -elasticity.dof_value(elasticity.master_dof(0)) : 1.;
+        unit_stiffness          = unit_force / unit_depth;
+        const double solve_time = solve_timer.wall_time();
+        pcout << "Unit load (" << (by_force ? "1 N" : "1 mm")
+              << "): " << std::setprecision(6) << "force " << unit_force
+              << " N, depth " << unit_depth << " mm";
+        if (!run.test_mode)
+          pcout << ", " << report.iterations << " CG iterations";
+        pcout << std::endl;
+        if (by_force && !run.test_mode)
+          pcout << "Force balance of the tied punch: |reaction - 1 N| = "
+                << std::abs(unit_force - 1.) << " N" << std::endl;
+        const std::vector<double> unit_profile =
+          vertical_displacements(profile_locations, elasticity);
+        TimerOutput::Scope t(timer, "output");
+        for (unsigned int step = 0; step < loads.size(); ++step)
+          {
+            // under force control the prescribed force, not the residual
+            forces.push_back(by_force ? loads[step] :
+                                        loads[step] * unit_stiffness);
+            depths.push_back(by_force ? loads[step] * unit_depth : loads[step]);
+            linear_iterations.push_back(step == 0 ? report.iterations : 0);
+            newton_iterations.push_back(0);
+            cuts.push_back(0);
+            times.push_back(step == 0 ? solve_time : 0.);
+            std::vector<double> profile(unit_profile);
+            for (double &uz : profile)
+              uz *= loads[step];
+            profiles.push_back(profile);
+            const double previous = step == 0 ? 1. : loads[step - 1];
+            elasticity.scale_solution(loads[step] / previous);
+            write_fields(step + 1, forces[step]);
+            pcout << "Load step " << step + 1 << " of " << loads.size()
+                  << ": force " << std::setprecision(6) << forces[step]
+                  << " N, depth " << depths[step] << " mm" << std::endl;
+          }
+        elasticity.scale_solution(1. / loads.back());
+        if (punch.section)
+          write_section(parameters, locator, elasticity, loads.back(), output);
+      }
+    else
+      {
+        // Finite strain: Newton with adaptive load increments from one
+        // target load to the next.
+        NewtonSolver newton(elasticity,
+                            parameters.newton,
+                            pcout,
+                            !run.test_mode);
+        const auto   apply_load = [&](const double load)
+          -> std::vector<std::pair<types::global_dof_index, double>> {
+          if (by_force)
+            {
+              elasticity.apply_constraints_to_solution();
+              return {{elasticity.master_dof(0), -load}};
+            }
+          // Newton's first update takes the punch to the new depth
+          elasticity.set_dirichlet_scale(load);
+          return {};
+        };
+        apply_load(0.);
+        double position  = 0.;
+        double increment = loads.front() / parameters.newton.initial_steps;
+        for (unsigned int step = 0; step < loads.size(); ++step)
+          {
+            Timer                step_timer(mpi_communicator, true);
+            const LoadPathReport report =
+              newton.follow(position, loads[step], increment, apply_load);
+            position = loads[step];
+            double force;
+            {
+              TimerOutput::Scope t(timer, "assembly");
+              force = by_force ? loads[step] :
+                                 -elasticity.reaction(punch_condition)[2];
+            }
+            const double depth =
+              by_force ? -elasticity.dof_value(elasticity.master_dof(0)) :
+                         loads[step];
+            forces.push_back(force);
+            depths.push_back(depth);
+            linear_iterations.push_back(report.linear_iterations);
+            newton_iterations.push_back(report.newton_iterations);
+            cuts.push_back(report.cuts);
+            residual_histories.push_back(report.last_residuals);
+            times.push_back(step_timer.wall_time());
+            profiles.push_back(
+              vertical_displacements(profile_locations, elasticity));
+            {
+              TimerOutput::Scope t(timer, "output");
+              write_fields(step + 1, force);
+            }
+            pcout << "Load step " << step + 1 << " of " << loads.size()
+                  << ": force " << std::setprecision(6) << force << " N, depth "
+                  << depth << " mm";
+            if (!run.test_mode)
+              pcout << " (" << report.steps << " increments, " << report.cuts
+                    << " cut, " << report.newton_iterations
+                    << " Newton iterations, " << report.linear_iterations
+                    << " CG iterations)";
+            pcout << std::endl;
+          }
+        unit_stiffness = forces.front() / depths.front();
+        if (punch.section)
+          {
+            TimerOutput::Scope t(timer, "output");
+            write_section(parameters, locator, elasticity, 1., output);
+          }
+      }
+
     {
       TimerOutput::Scope t(timer, "output");
-      for (unsigned int step = 0; step < loads.size(); ++step)
-        {
-          const double previous = step == 0 ? 1. : loads[step - 1];
-          elasticity.scale_solution(loads[step] / previous);
-          if (run.write_fields)
-            {
-              const std::string file =
-                elasticity.write_vtu(output.directory(), "volume", step + 1);
-              output.add_pvd_record("volume", forces[step], file);
-              coupling.write(output, step + 1, forces[step]);
-            }
-          pcout << "Load step " << step + 1 << " of " << loads.size()
-                << ": force " << std::setprecision(6) << forces[step]
-                << " N, depth " << depths[step] << " mm" << std::endl;
-        }
-      elasticity.scale_solution(1. / loads.back());
       if (punch.profile_length > 0)
-        write_surface_profile(punch,
-                              std::min(parameters.mesh.patch_length_x,
-                                       parameters.mesh.patch_length_y),
-                              locator,
-                              elasticity,
-                              loads,
-                              output);
-      if (punch.section)
-        write_section(parameters, locator, elasticity, loads.back(), output);
-
+        write_surface_profile(punch, profile_at, loads, profiles, output);
       std::ostringstream csv;
-      csv << "step,force_N,depth_mm,linear_iterations,wall_time_s\n"
+      csv << "step,force_N,depth_mm,newton_iterations,linear_iterations,"
+             "load_cuts,wall_time_s\n"
           << std::setprecision(10);
       for (unsigned int k = 0; k < loads.size(); ++k)
         csv << k + 1 << ',' << forces[k] << ',' << depths[k] << ','
-            << (k == 0 ? report.iterations : 0) << ','
-            << (k == 0 ? solve_time : 0.) << '\n';
+            << newton_iterations[k] << ',' << linear_iterations[k] << ','
+            << cuts[k] << ',' << times[k] << '\n';
       output.write_text("force_displacement.csv", csv.str());
     }
 
@@ -299,20 +430,37 @@ namespace ssc
     nlohmann::ordered_json summary =
       scene.summary(elasticity.n_dofs(),
                     mesh.triangulation().n_global_active_cells());
-    summary["embedded"]       = coupling.embedded_summary();
+    summary["embedded"]   = coupling.embedded_summary();
+    const bool  nonlinear = parameters.layers.nonlinear();
+    std::string models;
+    for (unsigned int l = 0; l < parameters.layers.n_layers(); ++l)
+      models += (l > 0 ? ", " : "") + parameters.layers.layer(l).name + ": " +
+                (parameters.layers.layer(l).model == MaterialModel::linear ?
+                   "linear" :
+                   "neo-Hookean");
     summary["discretisation"] = {{"degree", parameters.elasticity.degree},
                                  {"formulation",
                                   to_string(parameters.elasticity.formulation)},
-                                 {"material_model", "linear"}};
-    std::vector<unsigned int> per_step(loads.size(), 0);
-    per_step[0]        = report.iterations;
-    summary["solver"]  = {{"linear_iterations", report.iterations},
-                          {"linear_iterations_per_step", per_step},
-                          {"newton_iterations", 0},
-                          {"linear_solves", 1},
-                          {"note",
-                           "linear elasticity: one solve for a unit load, "
-                            "the load steps by scaling"}};
+                                 {"material_model", models}};
+    unsigned int total_linear = 0, total_newton = 0, total_cuts = 0;
+    for (unsigned int k = 0; k < loads.size(); ++k)
+      {
+        total_linear += linear_iterations[k];
+        total_newton += newton_iterations[k];
+        total_cuts += cuts[k];
+      }
+    summary["solver"] = {{"linear_iterations", total_linear},
+                         {"linear_iterations_per_step", linear_iterations},
+                         {"newton_iterations", total_newton},
+                         {"newton_iterations_per_step", newton_iterations},
+                         {"load_cuts_per_step", cuts},
+                         {"wall_time_per_step", times}};
+    if (nonlinear)
+      summary["solver"]["final_residuals_per_step"] = residual_histories;
+    else
+      summary["solver"]["note"] =
+        "linear elasticity: one solve for a unit load, the load steps by "
+        "scaling";
     summary["control"] = by_force ? "force" : "displacement";
     summary["contact"] =
       punch.contact == PunchContact::bonded ? "bonded" : "frictionless";
@@ -321,7 +469,7 @@ namespace ssc
     summary["depth_mm"]                      = depths;
     summary["stiffness_N_per_mm"]            = unit_stiffness;
     summary["half_space_stiffness_N_per_mm"] = reference;
-    if (by_force)
+    if (by_force && !nonlinear)
       summary["tie_force_balance_error_N"] = std::abs(unit_force - 1.);
     output.write_summary(summary);
     scene.print_wall_times();

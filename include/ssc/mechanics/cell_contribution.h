@@ -27,6 +27,27 @@ namespace ssc
     add_to_cell(const DoFHandler<3>::active_cell_iterator &cell,
                 FullMatrix<double>                        &cell_matrix,
                 Vector<double>                            &cell_rhs) const = 0;
+
+    /**
+     * For Newton's method: adds the tangent to @p cell_matrix and the
+     * internal force minus the load to @p cell_residual, at the cell's
+     * displacement values @p cell_displacement. The default is the linear
+     * response K u - f of add_to_cell(); finite-strain contributions
+     * override it.
+     */
+    virtual void
+    add_to_cell_nonlinear(const DoFHandler<3>::active_cell_iterator &cell,
+                          const Vector<double> &cell_displacement,
+                          FullMatrix<double>   &cell_matrix,
+                          Vector<double>       &cell_residual) const
+    {
+      FullMatrix<double> K(cell_matrix.m(), cell_matrix.n());
+      Vector<double>     f(cell_residual.size());
+      add_to_cell(cell, K, f);
+      K.vmult_add(cell_residual, cell_displacement);
+      cell_residual -= f;
+      cell_matrix.add(1., K);
+    }
   };
 } // namespace ssc
 

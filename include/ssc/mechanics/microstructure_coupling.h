@@ -69,10 +69,10 @@ namespace ssc
 
     const Parameters      &parameters;
     const EmbeddedMaterial septum_material, ligament_material;
-    BackgroundMesh     &mesh;
-    VolumeElasticity   &elasticity;
-    TimerOutput        &timer;
-    ConditionalOStream &pcout;
+    BackgroundMesh        &mesh;
+    VolumeElasticity      &elasticity;
+    TimerOutput           &timer;
+    ConditionalOStream    &pcout;
 
     std::unique_ptr<Microstructure>         microstructure;
     std::unique_ptr<PointLocator>           locator;

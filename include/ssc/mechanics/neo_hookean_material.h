@@ -34,16 +34,16 @@ namespace ssc
     /// Isochoric Kirchhoff stress and its spatial tangent for the
     /// deformation gradient @p F (det F > 0).
     void
-    isochoric(const Tensor<2, 3> &    F,
+    isochoric(const Tensor<2, 3>    &F,
               SymmetricTensor<2, 3> &tau,
               SymmetricTensor<4, 3> &tangent) const
     {
-      const double                J     = determinant(F);
+      const double                J = determinant(F);
       const SymmetricTensor<2, 3> b_bar =
         std::pow(J, -2. / 3.) * symmetrize(F * transpose(F));
       const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
       tau                           = mu * deviator(b_bar);
-      tangent = 2. / 3. * mu * trace(b_bar) *
+      tangent                       = 2. / 3. * mu * trace(b_bar) *
                   (identity_tensor<3>() - 1. / 3. * outer_product(I, I)) -
                 2. / 3. * (outer_product(tau, I) + outer_product(I, tau));
     }

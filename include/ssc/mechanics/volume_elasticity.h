@@ -111,12 +111,12 @@ namespace ssc
       return fe;
     }
 
-    /// Displacement and its symmetric gradient at located points, on every
-    /// rank (collective: each point is evaluated by the rank that owns it).
+    /// Displacement and its gradient at located points, on every rank
+    /// (collective: each point is evaluated by the rank that owns it).
     void
-    evaluate_at(const std::vector<PointLocation>   &locations,
-                std::vector<Tensor<1, 3>>          &displacements,
-                std::vector<SymmetricTensor<2, 3>> &strains) const;
+    evaluate_at(const std::vector<PointLocation> &locations,
+                std::vector<Tensor<1, 3>>        &displacements,
+                std::vector<Tensor<2, 3>>        &gradients) const;
 
     /// Hanging-node, Dirichlet and tied constraints, sparsity and matrix
     /// layout.
@@ -142,6 +142,69 @@ namespace ssc
     /// of the same shape).
     void
     scale_solution(const double factor);
+
+    /// @name Newton's method (finite strain; the linear law is the special
+    /// case that converges in one iteration)
+    /// @{
+
+    /// Scales the prescribed (Dirichlet) values of setup_system() by
+    /// @p factor, without rebuilding the sparsity pattern.
+    void
+    set_dirichlet_scale(const double factor);
+
+    /// Largest distance (mm) of a Dirichlet dof from its prescribed value
+    /// (after set_dirichlet_scale(), before Newton has reached it).
+    double
+    dirichlet_gap() const;
+
+    /// Sets the constrained entries of the solution: prescribed values
+    /// (times the Dirichlet scale), hanging nodes and ties.
+    void
+    apply_constraints_to_solution();
+
+    /**
+     * Assembles the residual r = f_int(u) - f_ext at the current solution:
+     * system_rhs = -r over the unconstrained dofs, whose l2 norm it
+     * returns, or infinity if a cell is inverted (det F <= 0). With
+     * @p with_matrix it assembles the tangent instead, for the Newton
+     * update: system_matrix = K and a right-hand side in which the update
+     * also takes the Dirichlet dofs the rest of the way to their prescribed
+     * values (so the prescribed displacement spreads through the tangent
+     * instead of distorting the cells at the boundary). @p nodal_forces are
+     * external point loads (dof, N).
+     */
+    double
+    assemble_newton_system(
+      const bool with_matrix,
+      const std::vector<std::pair<types::global_dof_index, double>>
+                        &nodal_forces = {},
+      const Function<3> *body_force   = nullptr);
+
+    /// Solves K du = -r (CG + AMG, homogeneous constraints).
+    LinearSolveReport
+    solve_newton_update();
+
+    /// Remembers the current solution as the start of a line search.
+    void
+    store_solution();
+
+    /// Solution = stored solution + @p step * du.
+    void
+    set_solution_from_stored(const double step);
+
+    /// Restores the stored solution (a failed line search).
+    void
+    restore_solution();
+
+    /// A copy of the solution (locally owned entries).
+    TrilinosWrappers::MPI::Vector
+    get_solution() const;
+
+    /// Replaces the solution (locally owned entries, e.g. from
+    /// get_solution()).
+    void
+    set_solution(const TrilinosWrappers::MPI::Vector &owned);
+    /// @}
 
     /// Assembles matrix and right-hand side; @p body_force in N/mm^3.
     void
@@ -196,7 +259,35 @@ namespace ssc
       return locally_relevant_solution;
     }
 
+    /// The last assembled matrix (tangent) and right-hand side (tests).
+    const TrilinosWrappers::SparseMatrix &
+    get_system_matrix() const
+    {
+      return system_matrix;
+    }
+
+    const TrilinosWrappers::MPI::Vector &
+    get_system_rhs() const
+    {
+      return system_rhs;
+    }
+
   private:
+    /**
+     * The one nonlinear cell routine: tangent and residual f_int - f_ext at
+     * the cell's displacement values @p u (linear layers: K u - f from
+     * assemble_cell(); neo-Hookean layers: finite strain, with the mean
+     * dilatation in the mixed formulation). Returns false if det F <= 0 at
+     * a quadrature point.
+     */
+    bool
+    nonlinear_cell(const typename DoFHandler<3>::active_cell_iterator &cell,
+                   FEValues<3>          &fe_values,
+                   const Vector<double> &u,
+                   const Function<3>    *body_force,
+                   FullMatrix<double>   &cell_matrix,
+                   Vector<double>       &cell_residual) const;
+
     /// The one cell assembly of this physics (matrix and load vector).
     void
     assemble_cell(const typename DoFHandler<3>::active_cell_iterator &cell,
@@ -207,6 +298,12 @@ namespace ssc
 
     void
     setup_preconditioner();
+
+    /// CG + AMG for the current system_matrix and system_rhs into
+    /// @p solution (a warm start), then the constraints applied.
+    LinearSolveReport
+    solve_linear_system(TrilinosWrappers::MPI::Vector   &solution,
+                        const AffineConstraints<double> &solution_constraints);
 
     BackgroundMesh             &mesh;
     const LayerStack           &layers;
@@ -230,7 +327,19 @@ namespace ssc
 
     AffineConstraints<double> hanging_node_constraints;
     AffineConstraints<double> constraints;
-    std::vector<IndexSet>     constrained_dofs_per_condition;
+    /// The same constraints with zero inhomogeneities (residuals) and with
+    /// the remaining Dirichlet increment (Newton updates).
+    AffineConstraints<double> homogeneous_constraints;
+    AffineConstraints<double> increment_constraints;
+    double                    dirichlet_scale = 1.;
+
+    void
+    build_increment_constraints();
+    /// Prescribed values of the Dirichlet dofs for scale 1.
+    std::vector<std::pair<types::global_dof_index, double>> dirichlet_values;
+    TrilinosWrappers::MPI::Vector                           newton_update;
+    TrilinosWrappers::MPI::Vector                           stored_solution;
+    std::vector<IndexSet> constrained_dofs_per_condition;
 
     TrilinosWrappers::SparseMatrix        system_matrix;
     TrilinosWrappers::MPI::Vector         system_rhs;

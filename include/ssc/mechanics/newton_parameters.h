@@ -1,0 +1,32 @@
+#ifndef ssc_mechanics_newton_parameters_h
+#define ssc_mechanics_newton_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  /// Newton's method and the adaptive load stepping around it (section
+  /// "Nonlinear solver").
+  struct NewtonParameters
+  {
+    unsigned int max_iterations     = 25;
+    double       relative_tolerance = 1e-8;
+    double       absolute_tolerance = 1e-12;
+    bool         line_search        = true;
+    unsigned int max_line_search    = 8;
+    unsigned int initial_steps      = 4;
+    double       minimum_increment  = 1e-4;
+    double       growth_factor      = 1.5;
+    unsigned int easy_iterations    = 4;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+} // namespace ssc
+
+#endif

@@ -1,0 +1,82 @@
+#ifndef ssc_mechanics_newton_solver_h
+#define ssc_mechanics_newton_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <ssc/mechanics/newton_parameters.h>
+#include <ssc/mechanics/volume_elasticity.h>
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ssc
+{
+  /// What one Newton solve did.
+  struct NewtonReport
+  {
+    bool                converged         = false;
+    unsigned int        iterations        = 0;
+    unsigned int        linear_iterations = 0;
+    std::vector<double> residuals; ///< l2 norm before each iteration
+    std::string         failure;   ///< why it did not converge
+  };
+
+  /// What following the load to one target did.
+  struct LoadPathReport
+  {
+    unsigned int        steps             = 0; ///< converged increments
+    unsigned int        cuts              = 0; ///< rejected increments
+    unsigned int        newton_iterations = 0;
+    unsigned int        linear_iterations = 0;
+    std::vector<double> last_residuals;
+  };
+
+  /**
+   * Newton's method with backtracking line search on the residual norm for
+   * the volume elasticity (and what is attached to it): the load is applied
+   * by the caller (prescribed values, point loads); iterations stop when
+   * the residual has dropped by the relative tolerance from its value at
+   * the start of the solve, or below the absolute tolerance. Inverted cells
+   * count as an infinite residual, so the line search backs off from them.
+   */
+  class NewtonSolver
+  {
+  public:
+    NewtonSolver(VolumeElasticity       &elasticity,
+                 const NewtonParameters &parameters,
+                 ConditionalOStream     &pcout,
+                 const bool              verbose);
+
+    /// Solves at the current load. @p nodal_forces are point loads.
+    NewtonReport
+    solve(const std::vector<std::pair<types::global_dof_index, double>>
+            &nodal_forces = {});
+
+    /**
+     * Follows the load parameter from @p from to @p to in increments that
+     * adapt: a failed Newton solve restores the last converged state and
+     * halves the increment (an error once it falls below the minimum
+     * fraction of the whole path), easy steps (at most easy_iterations
+     * Newton iterations) let it grow by the growth factor. @p apply_load
+     * sets the load for a parameter value and returns the point loads.
+     * @p increment is the first increment and returns the last accepted one.
+     */
+    LoadPathReport
+    follow(const double from,
+           const double to,
+           double      &increment,
+           const std::function<
+             std::vector<std::pair<types::global_dof_index, double>>(double)>
+             &apply_load);
+
+  private:
+    VolumeElasticity       &elasticity;
+    const NewtonParameters &parameters;
+    ConditionalOStream     &pcout;
+    const bool              verbose;
+  };
+} // namespace ssc
+
+#endif

@@ -1,0 +1,73 @@
+#include <ssc/mechanics/newton_parameters.h>
+
+namespace ssc
+{
+  void
+  NewtonParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nonlinear solver");
+    prm.declare_entry("Max iterations",
+                      "25",
+                      Patterns::Integer(1, 1000),
+                      "Newton iterations per load increment before the "
+                      "increment counts as failed and is cut.");
+    prm.declare_entry("Relative tolerance",
+                      "1e-8",
+                      Patterns::Double(0, 1),
+                      "Newton stops when the residual norm has dropped by "
+                      "this factor from its value at the start of the "
+                      "increment...");
+    prm.declare_entry("Absolute tolerance",
+                      "1e-12",
+                      Patterns::Double(0),
+                      "... or is below this value (N).");
+    prm.declare_entry("Line search",
+                      "true",
+                      Patterns::Bool(),
+                      "Backtracking line search on the residual norm (also "
+                      "backs off from inverted cells).");
+    prm.declare_entry("Max line search steps",
+                      "8",
+                      Patterns::Integer(1, 50),
+                      "Halvings of the Newton step before giving up.");
+    prm.declare_entry("Initial steps",
+                      "4",
+                      Patterns::Integer(1, 10000),
+                      "The first increment is 1/(this) of the way to the "
+                      "first target load.");
+    prm.declare_entry("Minimum increment",
+                      "1e-4",
+                      Patterns::Double(0, 1),
+                      "Smallest increment, as a fraction of the way to the "
+                      "current target, before the solve is given up with an "
+                      "error.");
+    prm.declare_entry("Growth factor",
+                      "1.5",
+                      Patterns::Double(1, 10),
+                      "Factor by which the increment grows after an easy "
+                      "increment.");
+    prm.declare_entry("Easy iterations",
+                      "4",
+                      Patterns::Integer(1, 100),
+                      "An increment that converged in at most this many "
+                      "Newton iterations is easy.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  NewtonParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nonlinear solver");
+    max_iterations     = prm.get_integer("Max iterations");
+    relative_tolerance = prm.get_double("Relative tolerance");
+    absolute_tolerance = prm.get_double("Absolute tolerance");
+    line_search        = prm.get_bool("Line search");
+    max_line_search    = prm.get_integer("Max line search steps");
+    initial_steps      = prm.get_integer("Initial steps");
+    minimum_increment  = prm.get_double("Minimum increment");
+    growth_factor      = prm.get_double("Growth factor");
+    easy_iterations    = prm.get_integer("Easy iterations");
+    prm.leave_subsection();
+  }
+} // namespace ssc

@@ -1,0 +1,178 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <ssc/mechanics/newton_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace ssc
+{
+  NewtonSolver::NewtonSolver(VolumeElasticity       &elasticity,
+                             const NewtonParameters &parameters,
+                             ConditionalOStream     &pcout,
+                             const bool              verbose)
+    : elasticity(elasticity)
+    , parameters(parameters)
+    , pcout(pcout)
+    , verbose(verbose)
+  {}
+
+
+  NewtonReport
+  NewtonSolver::solve(
+    const std::vector<std::pair<types::global_dof_index, double>> &nodal_forces)
+  {
+    NewtonReport report;
+    double residual = elasticity.assemble_newton_system(false, nodal_forces);
+    double gap      = elasticity.dirichlet_gap();
+    if (!std::isfinite(residual))
+      {
+        report.failure = "inverted cells at the start of the increment";
+        return report;
+      }
+    report.residuals.push_back(residual);
+    // While prescribed displacements are still to be reached, the residual
+    // says nothing about convergence: the tolerance is set relative to the
+    // residual once they are met.
+    const double gap_tolerance = 1e-12;
+    double       load_scale    = residual;
+    double       target        = gap > gap_tolerance ?
+                                   0. :
+                                   std::max(parameters.absolute_tolerance,
+                               parameters.relative_tolerance * residual);
+    if (verbose)
+      pcout << "    Newton: residual " << std::scientific
+            << std::setprecision(3) << residual << std::defaultfloat
+            << std::endl;
+    while (gap > gap_tolerance || residual > target)
+      {
+        if (report.iterations == parameters.max_iterations)
+          {
+            report.failure = "no convergence in " +
+                             std::to_string(parameters.max_iterations) +
+                             " iterations";
+            return report;
+          }
+        elasticity.assemble_newton_system(true, nodal_forces);
+        // the scale of the load: the right-hand side of the first update
+        // (prescribed displacements) or the initial residual (forces)
+        if (report.iterations == 0)
+          load_scale =
+            std::max(load_scale, elasticity.get_system_rhs().l2_norm());
+        try
+          {
+            report.linear_iterations +=
+              elasticity.solve_newton_update().iterations;
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream message;
+            e.print_info(message);
+            report.failure = "the linear solver failed (" +
+                             Utilities::trim(message.str()) + ")";
+            return report;
+          }
+        elasticity.store_solution();
+        // A step that reaches the prescribed displacements is taken whole;
+        // otherwise backtrack until the residual decreases.
+        const bool closing = gap > gap_tolerance;
+        double     step = 1., trial = 0.;
+        for (unsigned int k = 0;; ++k)
+          {
+            elasticity.set_solution_from_stored(step);
+            trial = elasticity.assemble_newton_system(false, nodal_forces);
+            if (closing || !parameters.line_search ||
+                trial <= (1. - 1e-4 * step) * residual || trial <= target)
+              break;
+            if (k + 1 == parameters.max_line_search)
+              {
+                elasticity.restore_solution();
+                report.failure =
+                  std::isfinite(trial) ?
+                    "the line search found no decrease of the residual" :
+                    "every step of the line search inverts cells";
+                return report;
+              }
+            step *= 0.5;
+          }
+        ++report.iterations;
+        residual = trial;
+        gap      = elasticity.dirichlet_gap();
+        report.residuals.push_back(residual);
+        if (verbose)
+          pcout << "    Newton iteration " << report.iterations << ": residual "
+                << std::scientific << std::setprecision(3) << residual
+                << std::defaultfloat
+                << (step < 1. ? ", step " + std::to_string(step) :
+                                std::string())
+                << std::endl;
+        if (!std::isfinite(residual))
+          {
+            report.failure = "inverted cells";
+            return report;
+          }
+        if (closing && gap <= gap_tolerance)
+          target = std::max(parameters.absolute_tolerance,
+                            parameters.relative_tolerance *
+                              std::max(residual, load_scale));
+      }
+    report.converged = true;
+    return report;
+  }
+
+
+  LoadPathReport
+  NewtonSolver::follow(
+    const double from,
+    const double to,
+    double      &increment,
+    const std::function<std::vector<std::pair<types::global_dof_index, double>>(
+      double)>  &apply_load)
+  {
+    LoadPathReport report;
+    const double   path     = to - from;
+    double         position = from;
+    increment               = std::min(increment, path);
+    while (position < to - 1e-12 * std::abs(path))
+      {
+        const double       next         = std::min(position + increment, to);
+        const auto         start        = elasticity.get_solution();
+        const auto         nodal_forces = apply_load(next);
+        const NewtonReport newton       = solve(nodal_forces);
+        report.newton_iterations += newton.iterations;
+        report.linear_iterations += newton.linear_iterations;
+        if (newton.converged)
+          {
+            position = next;
+            ++report.steps;
+            report.last_residuals = newton.residuals;
+            if (verbose)
+              pcout << "  load " << std::setprecision(6) << position << ": "
+                    << newton.iterations << " Newton iterations" << std::endl;
+            if (newton.iterations <= parameters.easy_iterations)
+              increment *= parameters.growth_factor;
+          }
+        else
+          {
+            // back to the last converged state, with half the increment
+            elasticity.set_solution(start);
+            apply_load(position);
+            ++report.cuts;
+            increment *= 0.5;
+            pcout << "  load increment to " << std::setprecision(6) << next
+                  << " rejected (" << newton.failure << "), cut to "
+                  << increment << std::endl;
+            AssertThrow(increment >=
+                          parameters.minimum_increment * std::abs(path),
+                        ExcMessage("Newton's method failed at load " +
+                                   std::to_string(position) + " (" +
+                                   newton.failure +
+                                   ") and the increment fell below Nonlinear "
+                                   "solver/Minimum increment."));
+          }
+      }
+    return report;
+  }
+} // namespace ssc
