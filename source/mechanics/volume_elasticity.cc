@@ -929,10 +929,27 @@ namespace ssc
                           std::max(target, 1e-300),
                           false,
                           false);
-    TrilinosWrappers::SolverCG cg(control);
+        TrilinosWrappers::SolverCG cg(control);
     try
       {
-        cg.solve(system_matrix, solution, system_rhs, preconditioner);
+        try
+          {
+            cg.solve(system_matrix, solution, system_rhs, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            throw;
+          }
+        catch (const ExceptionBase &)
+          {
+            // CG breaks down on an indefinite matrix (a finite-strain
+            // tangent past a stability limit): GMRES does not need
+            // definiteness
+            solution_constraints.set_zero(solution);
+            TrilinosWrappers::SolverGMRES gmres(
+              control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
+            gmres.solve(system_matrix, solution, system_rhs, preconditioner);
+          }
       }
     catch (const SolverControl::NoConvergence &e)
       {
