@@ -4,7 +4,8 @@ bonded punch, linear elasticity): stiffness error against a converged value
 versus wall time and DoFs, for Q1 displacement, Q1 mixed (B-bar), Q1
 enhanced (B-bar plus incompatible modes) and Q2 mixed, layers only and with the microstructure (everywhere, or only in a
 cylinder of radius 15 mm around the punch), plus the truncation of the
-patch (60 x 60 mm against 120 x 120 mm).
+patch (the scene's 80 mm patch and a 60 mm one against patches twice as
+large).
 
 A level refines the mesh towards the punch edge (Mesh/Region of interest/
 Local refinements) on 5 mm or 2.5 mm base cells. The converged stiffness of
@@ -29,29 +30,37 @@ BASE = {"Run/Write fields": "false", "Punch/Control": "displacement",
         "Punch/Section": "false", "Punch/Profile length": "0"}
 LAYERS = {"Microstructure/Lobules": "false",
           "Microstructure/Ligaments": "false"}
+EVERYWHERE = {"Microstructure/Region of interest/Shape": "everywhere"}
 ROI = {"Microstructure/Region of interest/Shape": "cylinder",
        "Microstructure/Region of interest/Radius": "15"}
 Q1D = {"Elasticity/Formulation": "displacement"}
+Q1M = {"Elasticity/Formulation": "mixed"}
 Q1E = {"Elasticity/Formulation": "enhanced"}
-Q2M = {"Elasticity/Degree": "2"}
+Q2M = {"Elasticity/Degree": "2", "Elasticity/Formulation": "mixed"}
+CS5 = {"Mesh/Cell size": "5"}
 CS25 = {"Mesh/Cell size": "2.5"}
-# (model, discretisation label, overrides, levels)
+# (model, discretisation label, overrides, levels); the patch is the
+# scene's 80 mm one (2.5 or 5 mm cells in the central 60 mm, graded outside)
 CONFIGURATIONS = [
-    ("layers", "Q1 mixed, 5 mm", {**LAYERS}, [2, 3, 4, 5]),
-    ("layers", "Q1 mixed, 2.5 mm", {**LAYERS, **CS25}, [1, 2, 3, 4, 5]),
-    ("layers", "Q1 displacement, 5 mm", {**LAYERS, **Q1D}, [2, 3, 4, 5]),
-    ("layers", "Q1 enhanced, 5 mm", {**LAYERS, **Q1E}, [2, 3, 4, 5]),
+    ("layers", "Q1 mixed, 5 mm", {**LAYERS, **Q1M, **CS5}, [2, 3, 4, 5]),
+    ("layers", "Q1 mixed, 2.5 mm", {**LAYERS, **Q1M, **CS25},
+     [1, 2, 3, 4, 5]),
+    ("layers", "Q1 displacement, 5 mm", {**LAYERS, **Q1D, **CS5},
+     [2, 3, 4, 5]),
+    ("layers", "Q1 enhanced, 5 mm", {**LAYERS, **Q1E, **CS5}, [2, 3, 4, 5]),
     ("layers", "Q1 enhanced, 2.5 mm", {**LAYERS, **Q1E, **CS25},
      [1, 2, 3, 4]),
-    ("layers", "Q2 mixed, 5 mm", {**LAYERS, **Q2M}, [1, 2]),
-    ("microstructure", "Q1 mixed, 5 mm", {}, [2, 3, 4, 5]),
-    ("microstructure", "Q1 enhanced, 5 mm", {**Q1E}, [2, 3, 4, 5]),
-    ("microstructure", "Q1 enhanced, 2.5 mm", {**Q1E, **CS25},
+    ("layers", "Q2 mixed, 5 mm", {**LAYERS, **Q2M, **CS5}, [1, 2]),
+    ("microstructure", "Q1 mixed, 5 mm", {**EVERYWHERE, **Q1M, **CS5},
+     [2, 3, 4, 5]),
+    ("microstructure", "Q1 enhanced, 5 mm", {**EVERYWHERE, **Q1E, **CS5},
+     [2, 3, 4, 5]),
+    ("microstructure", "Q1 enhanced, 2.5 mm", {**EVERYWHERE, **Q1E, **CS25},
      [1, 2, 3, 4, 5]),
-    ("microstructure", "Q1 mixed, 5 mm, ROI r = 15 mm", {**ROI},
-     [2, 3, 4, 5]),
-    ("microstructure", "Q1 enhanced, 5 mm, ROI r = 15 mm", {**Q1E, **ROI},
-     [2, 3, 4, 5]),
+    ("microstructure", "Q1 enhanced, 2.5 mm, ROI r = 15 mm",
+     {**ROI, **Q1E, **CS25}, [1, 2, 3, 4]),
+    ("microstructure", "Q1 enhanced, 5 mm, ROI r = 15 mm",
+     {**ROI, **Q1E, **CS5}, [2, 3, 4, 5]),
 ]
 # the sequence whose Richardson extrapolation is the converged stiffness
 REFERENCE = {"layers": "Q1 mixed, 2.5 mm",
@@ -188,23 +197,25 @@ def main():
                   f"{best['t_total']:.1f} s on 1 core, "
                   f"{r2['t_total']:.1f} s on 2 ranks", flush=True)
 
-        # truncation: the default patch against one twice as large (the
-        # coarse cells grow outside the default patch)
+        # truncation: the scene's 80 mm patch (and a 60 mm one) against one
+        # twice as large; the coarse cells grow outside the central 60 mm
         trunc = []
         for model, extra in (("layers", LAYERS), ("microstructure", ROI)):
-            ks = []
-            for length in (60, 120):
-                o = {**extra, "Mesh/Patch length x": str(length),
-                     "Mesh/Patch length y": str(length),
-                     "Mesh/Core half width": "30", "Mesh/Grading ratio": "1.5",
-                     "Mesh/Region of interest/Local refinements": "3"}
-                s = run(o, folder, "trunc")
-                ks.append(s["stiffness_N_per_mm"])
-                trunc.append(dict(model=model, patch_mm=length, dofs=s["dofs"],
-                                  stiffness_N_per_mm=s["stiffness_N_per_mm"]))
-            print(f"truncation ({model}): 60 mm {ks[0]:.6f}, 120 mm "
-                  f"{ks[1]:.6f} N/mm, change {100 * (ks[0] / ks[1] - 1):+.3f} %",
-                  flush=True)
+            for small in (60, 80):
+                ks = []
+                for length in (small, 2 * small):
+                    o = {**extra, **Q1E, **CS5,
+                         "Mesh/Patch length x": str(length),
+                         "Mesh/Patch length y": str(length),
+                         "Mesh/Region of interest/Local refinements": "3"}
+                    s = run(o, folder, "trunc")
+                    ks.append(s["stiffness_N_per_mm"])
+                    trunc.append(dict(model=model, patch_mm=length,
+                                      dofs=s["dofs"],
+                                      stiffness_N_per_mm=ks[-1]))
+                print(f"truncation ({model}): {small} mm {ks[0]:.6f}, "
+                      f"{2 * small} mm {ks[1]:.6f} N/mm, change "
+                      f"{100 * (ks[0] / ks[1] - 1):+.3f} %", flush=True)
         with open(os.path.join(OUT, "forearm_truncation.csv"), "w",
                   newline="") as f:
             w = csv.DictWriter(f, fieldnames=list(trunc[0].keys()))

@@ -238,6 +238,10 @@ namespace ssc
   Parameters::check_consistency() const
   {
     layers.check_thickness_positive(mesh.patch_length_x, mesh.patch_length_y);
+    AssertThrow(!embedded.ligament_tension_only || layers.nonlinear(),
+                ExcMessage("Embedded/Ligaments/Tension only needs Newton's "
+                           "method: give at least one layer a nonlinear "
+                           "Material model (neo-Hookean)."));
     if (microstructure.lobules || microstructure.ligaments)
       {
         // throws unless the region overlaps the patch

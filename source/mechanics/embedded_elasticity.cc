@@ -13,10 +13,12 @@ namespace ssc
     const std::function<EmbeddedMaterial(types::material_id)> &material,
     const FiniteElement<3>                                    &fe,
     const Mapping<3>                                          &mapping,
-    const MPI_Comm                                             communicator)
+    const MPI_Comm                                             communicator,
+    const bool                                                 tension_only)
     : kind(kind)
     , fe(fe)
     , mapping(mapping)
+    , tension_only(tension_only)
   {
     unsigned int n_local = 0;
     for (const CellQuadrature &cell_quadrature : quadrature)
@@ -60,12 +62,9 @@ namespace ssc
     const unsigned int index = cell->active_cell_index();
     if (index >= points_per_cell.size() || points_per_cell[index].empty())
       return;
-    const std::vector<LocalPoint> &local = points_per_cell[index];
-    std::vector<Point<3>>          units(local.size());
-    for (unsigned int q = 0; q < local.size(); ++q)
-      units[q] = local[q].unit_point;
-    FEValues<3> fe_values(mapping, fe, Quadrature<3>(units), update_gradients);
-    fe_values.reinit(cell);
+    const std::vector<LocalPoint> &local         = points_per_cell[index];
+    const auto                     fe_values_ptr = reinit_points(cell, local);
+    const FEValues<3>             &fe_values     = *fe_values_ptr;
 
     const unsigned int        n = fe.n_dofs_per_cell();
     std::vector<Tensor<2, 3>> strain(n); // tangential part P eps P
@@ -99,6 +98,102 @@ namespace ssc
                 value += local[q].second * scalar_product(strain[i], strain[j]);
               cell_matrix(i, j) += value;
             }
+      }
+  }
+
+
+  std::unique_ptr<FEValues<3>>
+  EmbeddedElasticity::reinit_points(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const std::vector<LocalPoint>             &local) const
+  {
+    std::vector<Point<3>> units(local.size());
+    for (unsigned int q = 0; q < local.size(); ++q)
+      units[q] = local[q].unit_point;
+    auto fe_values = std::make_unique<FEValues<3>>(mapping,
+                                                   fe,
+                                                   Quadrature<3>(units),
+                                                   update_gradients);
+    fe_values->reinit(cell);
+    return fe_values;
+  }
+
+
+  void
+  EmbeddedElasticity::add_to_cell_nonlinear(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const Vector<double>                      &u,
+    FullMatrix<double>                        &cell_matrix,
+    Vector<double>                            &cell_residual) const
+  {
+    const unsigned int index = cell->active_cell_index();
+    if (index >= points_per_cell.size() || points_per_cell[index].empty())
+      return;
+    const std::vector<LocalPoint> &local     = points_per_cell[index];
+    const auto                     fe_values = reinit_points(cell, local);
+    const unsigned int             n         = fe.n_dofs_per_cell();
+    std::vector<unsigned int>      component(n);
+    std::vector<Tensor<1, 3>>      g(n); // reference gradients
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe.system_to_component_index(i).first;
+    for (unsigned int q = 0; q < local.size(); ++q)
+      {
+        Tensor<2, 3> F = unit_symmetric_tensor<3>();
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            g[i] = fe_values->shape_grad_component(i, q, component[i]);
+            F[component[i]] += u(i) * g[i];
+          }
+        const Tensor<1, 3> &d = local[q].direction;
+        if (kind == EmbeddedKind::cable)
+          {
+            // e = (|F tau|^2 - 1) / 2, S = E A e; de/du_i = a_ci (g_i . tau)
+            const Tensor<1, 3>  a     = F * d;
+            const double        e     = 0.5 * (a * a - 1.);
+            const bool          slack = tension_only && e < 0;
+            const double        S     = slack ? 0. : local[q].first * e;
+            std::vector<double> de(n), gd(n);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                gd[i] = g[i] * d;
+                de[i] = a[component[i]] * gd[i];
+                cell_residual(i) += S * de[i];
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                cell_matrix(i, j) +=
+                  (slack ? 0. : local[q].first * de[i] * de[j]) +
+                  (component[i] == component[j] ? S * gd[i] * gd[j] : 0.);
+          }
+        else
+          {
+            // E = (P F^T F P - P)/2, S = lambda_ps tr(E) P + 2 mu E;
+            // dE_i = sym(a_i (x) b_i), a_i = P F^T e_ci, b_i = P g_i
+            Tensor<2, 3> P = unit_symmetric_tensor<3>();
+            P -= outer_product(d, d);
+            const Tensor<2, 3> E = 0.5 * (P * transpose(F) * F * P - P);
+            const Tensor<2, 3> S =
+              local[q].first * trace(E) * P + local[q].second * E;
+            const Tensor<2, 3>        PFt = P * transpose(F);
+            std::vector<Tensor<2, 3>> dE(n);
+            std::vector<Tensor<1, 3>> b(n);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                Tensor<1, 3> a;
+                for (unsigned int k = 0; k < 3; ++k)
+                  a[k] = PFt[k][component[i]];
+                b[i]                  = P * g[i];
+                const Tensor<2, 3> ab = outer_product(a, b[i]);
+                dE[i]                 = 0.5 * (ab + transpose(ab));
+                cell_residual(i) += scalar_product(S, dE[i]);
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                cell_matrix(i, j) +=
+                  local[q].first * trace(dE[i]) * trace(dE[j]) +
+                  local[q].second * scalar_product(dE[i], dE[j]) +
+                  (component[i] == component[j] ? b[j] * (S * b[i]) : 0.);
+          }
       }
   }
 

@@ -60,6 +60,12 @@ namespace ssc
                       "Diameter of a ligament, mm (retinacular bands are "
                       "0.2-0.6 mm wide on ultrasound); the axial stiffness "
                       "is E pi d^2 / 4.");
+    prm.declare_entry("Tension only",
+                      "false",
+                      Patterns::Bool(),
+                      "A compressed ligament is slack and carries no force "
+                      "(finite strain, i.e. with a nonlinear layer model, "
+                      "only).");
     prm.declare_entry("Quadrature points",
                       "2",
                       Patterns::Integer(1, 6),
@@ -86,6 +92,7 @@ namespace ssc
     ligament_youngs_modulus = prm.get_double("Young's modulus");
     ligament_diameter       = prm.get_double("Diameter");
     ligament_quadrature     = prm.get_integer("Quadrature points");
+    ligament_tension_only   = prm.get_bool("Tension only");
     prm.leave_subsection();
     prm.leave_subsection();
     AssertThrow(septum_poisson_ratio > -1 && septum_poisson_ratio < 0.5,

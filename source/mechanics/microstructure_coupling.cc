@@ -56,7 +56,8 @@ namespace ssc
       [material](types::material_id) { return material; },
       elasticity.get_fe(),
       elasticity.get_mapping(),
-      locator->communicator());
+      locator->communicator(),
+      kind == EmbeddedKind::cable && parameters.embedded.ligament_tension_only);
     elasticity.attach(*stiffness);
     return stiffness;
   }

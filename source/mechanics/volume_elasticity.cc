@@ -929,7 +929,7 @@ namespace ssc
                           std::max(target, 1e-300),
                           false,
                           false);
-        TrilinosWrappers::SolverCG cg(control);
+    TrilinosWrappers::SolverCG cg(control);
     try
       {
         try
@@ -947,7 +947,8 @@ namespace ssc
             // definiteness
             solution_constraints.set_zero(solution);
             TrilinosWrappers::SolverGMRES gmres(
-              control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
+              control,
+              TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
             gmres.solve(system_matrix, solution, system_rhs, preconditioner);
           }
       }

@@ -5,12 +5,14 @@
 #include <deal.II/base/tensor.h>
 
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 
 #include <ssc/embedding/clipped_quadrature.h>
 #include <ssc/mechanics/cell_contribution.h>
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace ssc
@@ -43,6 +45,11 @@ namespace ssc
    *   lambda_ps = 2 lambda mu / (lambda + 2 mu) = E nu / (1 - nu^2).
    * Cable (unit tangent tau):  (E A / 2) int (tau . eps tau)^2 ds.
    *
+   * At finite strain (Newton's method) the same laws act on Green-Lagrange
+   * strains (St Venant-Kirchhoff): the membrane strain
+   * E = (P F^T F P - P) / 2 and the cable strain e = (|F tau|^2 - 1) / 2,
+   * optionally tension-only for cables (a slack ligament carries nothing).
+   *
    * The quadrature comes split along the locally owned background cells
    * (clipped_quadrature()), so each rank assembles its own cells' part.
    */
@@ -55,12 +62,21 @@ namespace ssc
       const std::function<EmbeddedMaterial(types::material_id)> &material,
       const FiniteElement<3>                                    &fe,
       const Mapping<3>                                          &mapping,
-      const MPI_Comm                                             communicator);
+      const MPI_Comm                                             communicator,
+      const bool tension_only = false);
 
     void
     add_to_cell(const DoFHandler<3>::active_cell_iterator &cell,
                 FullMatrix<double>                        &cell_matrix,
                 Vector<double> &cell_rhs) const override;
+
+    /// Finite strain: tangent and internal forces of the Green-Lagrange
+    /// laws at the cell's displacement @p u.
+    void
+    add_to_cell_nonlinear(const DoFHandler<3>::active_cell_iterator &cell,
+                          const Vector<double>                      &u,
+                          FullMatrix<double> &cell_matrix,
+                          Vector<double>     &cell_residual) const override;
 
     /// Quadrature points on all ranks.
     unsigned int
@@ -69,9 +85,10 @@ namespace ssc
       return n_global_points;
     }
 
-    /// Strain energy density of the embedded structure (per unit area or
-    /// length) for the background strain @p strain at a point with
-    /// direction @p direction and material @p material: for output.
+    /// Stress of the embedded structure for the background strain
+    /// @p strain at a point with direction @p direction and material
+    /// @p material, for output: the axial stress of a cable, the von Mises
+    /// stress of a membrane (MPa).
     double
     axial_or_membrane_stress(const SymmetricTensor<2, 3> &strain,
                              const Tensor<1, 3>          &direction,
@@ -93,6 +110,12 @@ namespace ssc
     const Mapping<3>                    &mapping;
     std::vector<std::vector<LocalPoint>> points_per_cell;
     unsigned int                         n_global_points;
+    const bool                           tension_only;
+
+    /// FEValues with the cell's embedded points (reference gradients).
+    std::unique_ptr<FEValues<3>>
+    reinit_points(const DoFHandler<3>::active_cell_iterator &cell,
+                  const std::vector<LocalPoint>             &local) const;
   };
 } // namespace ssc
 

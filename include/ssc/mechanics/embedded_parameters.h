@@ -20,6 +20,7 @@ namespace ssc
     double       ligament_youngs_modulus = 0.1;
     double       ligament_diameter       = 0.3;
     unsigned int ligament_quadrature     = 2;
+    bool         ligament_tension_only   = false;
 
     /// Cross-section area of a ligament, mm^2.
     double
