@@ -242,6 +242,10 @@ namespace ssc
                 ExcMessage("Embedded/Ligaments/Tension only needs Newton's "
                            "method: give at least one layer a nonlinear "
                            "Material model (neo-Hookean)."));
+    AssertThrow(!embedded.septum_tension_field || layers.nonlinear(),
+                ExcMessage("Embedded/Septa/Tension field needs Newton's "
+                           "method: give at least one layer a nonlinear "
+                           "Material model (neo-Hookean)."));
     if (microstructure.lobules || microstructure.ligaments)
       {
         // throws unless the region overlaps the patch

@@ -1,13 +1,16 @@
 // The Newton tangent is the derivative of the residual: on a small
 // distorted mesh (variable thickness) under a random displacement with
-// strains of about 10 %, every column of the assembled tangent matches the
+// strains of about 10 % on top of a uniform stretch or compression, every
+// column of the assembled tangent matches the
 // central difference of the assembled residual -- for neo-Hookean layers in
 // the displacement formulation and in the mixed one (mean dilatation), and
-// with a tilted finite-strain membrane and a cable embedded (tension-only
-// cable included).
+// with a tilted finite-strain membrane and a cable embedded, also with the
+// tension-field membrane (taut, wrinkled, slack) and the tension-only cable.
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/grid/tria_description.h>
 
@@ -19,6 +22,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <random>
 
 #include "tests.h"
@@ -67,11 +71,16 @@ main(int argc, char **argv)
                                SubCellData());
   }
 
-  for (const std::string variant : {"displacement",
-                                    "mixed",
-                                    "mixed + membrane + cable",
-                                    "mixed + membrane + tension-only cable"})
+  for (const std::string variant :
+       {"displacement",
+        "mixed",
+        "mixed + membrane + cable",
+        "mixed + tension-field membrane + tension-only cable, stretched",
+        "mixed + tension-field membrane + tension-only cable, compressed"})
     {
+      const bool   tension_only = variant.find("tension") != std::string::npos;
+      const double stretch =
+        variant.find("compressed") != std::string::npos ? -0.05 : 0.2;
       const auto                formulation = variant == "displacement" ?
                                                 ssc::Formulation::displacement :
                                                 ssc::Formulation::mixed;
@@ -98,7 +107,8 @@ main(int argc, char **argv)
             [m](types::material_id) { return m; },
             elasticity.get_fe(),
             elasticity.get_mapping(),
-            MPI_COMM_WORLD);
+            MPI_COMM_WORLD,
+            tension_only);
           const ssc::EmbeddedMaterial c = {0.1, 0., 0.07};
           ligament = std::make_unique<ssc::EmbeddedElasticity>(
             ssc::EmbeddedKind::cable,
@@ -107,7 +117,7 @@ main(int argc, char **argv)
             elasticity.get_fe(),
             elasticity.get_mapping(),
             MPI_COMM_WORLD,
-            variant.find("tension") != std::string::npos);
+            tension_only);
           elasticity.attach(*septum);
           elasticity.attach(*ligament);
         }
@@ -115,8 +125,30 @@ main(int argc, char **argv)
       std::mt19937                           generator(5);
       std::uniform_real_distribution<double> uniform(-0.05, 0.05);
       TrilinosWrappers::MPI::Vector          u = elasticity.get_solution();
+      // a uniform stretch (20 %: septum and cable taut) or compression
+      // (5 %: the tension-field septum partly wrinkled, partly slack)
+      // plus random strains of about 10 %
+      {
+        std::map<types::global_dof_index, Point<3>> support;
+        DoFTools::map_dofs_to_support_points(elasticity.get_mapping(),
+                                             elasticity.get_dof_handler(),
+                                             support);
+        const unsigned int n_per_cell = elasticity.get_fe().n_dofs_per_cell();
+        std::vector<types::global_dof_index> dofs(n_per_cell);
+        for (const auto &cell :
+             elasticity.get_dof_handler().active_cell_iterators())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int k = 0; k < n_per_cell; ++k)
+              {
+                const unsigned int c =
+                  elasticity.get_fe().system_to_component_index(k).first;
+                u[dofs[k]] = stretch * support[dofs[k]][c];
+              }
+          }
+      }
       for (unsigned int i = 0; i < u.size(); ++i)
-        u[i] = uniform(generator);
+        u[i] += uniform(generator);
       u.compress(VectorOperation::insert);
       elasticity.set_solution(u);
       elasticity.assemble_newton_system(true);

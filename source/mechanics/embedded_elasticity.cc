@@ -5,6 +5,8 @@
 
 #include <ssc/mechanics/embedded_elasticity.h>
 
+#include <array>
+
 namespace ssc
 {
   EmbeddedElasticity::EmbeddedElasticity(
@@ -167,14 +169,13 @@ namespace ssc
           }
         else
           {
-            // E = (P F^T F P - P)/2, S = lambda_ps tr(E) P + 2 mu E;
+            // E = (P F^T F P - P)/2, S = dW/dE (membrane_stress);
             // dE_i = sym(a_i (x) b_i), a_i = P F^T e_ci, b_i = P g_i
             Tensor<2, 3> P = unit_symmetric_tensor<3>();
             P -= outer_product(d, d);
-            const Tensor<2, 3> E = 0.5 * (P * transpose(F) * F * P - P);
-            const Tensor<2, 3> S =
-              local[q].first * trace(E) * P + local[q].second * E;
-            const Tensor<2, 3>        PFt = P * transpose(F);
+            const Tensor<2, 3>        E = 0.5 * (P * transpose(F) * F * P - P);
+            const Tensor<2, 3>        PFt   = P * transpose(F);
+            const MembraneState       state = membrane_state(E, P, local[q]);
             std::vector<Tensor<2, 3>> dE(n);
             std::vector<Tensor<1, 3>> b(n);
             for (unsigned int i = 0; i < n; ++i)
@@ -185,16 +186,100 @@ namespace ssc
                 b[i]                  = P * g[i];
                 const Tensor<2, 3> ab = outer_product(a, b[i]);
                 dE[i]                 = 0.5 * (ab + transpose(ab));
-                cell_residual(i) += scalar_product(S, dE[i]);
+                cell_residual(i) += scalar_product(state.stress, dE[i]);
               }
             for (unsigned int i = 0; i < n; ++i)
               for (unsigned int j = 0; j < n; ++j)
                 cell_matrix(i, j) +=
-                  local[q].first * trace(dE[i]) * trace(dE[j]) +
-                  local[q].second * scalar_product(dE[i], dE[j]) +
-                  (component[i] == component[j] ? b[j] * (S * b[i]) : 0.);
+                  state.second_derivative(dE[i], dE[j]) +
+                  (component[i] == component[j] ? b[j] * (state.stress * b[i]) :
+                                                  0.);
           }
       }
+  }
+
+
+  EmbeddedElasticity::MembraneState
+  EmbeddedElasticity::membrane_state(const Tensor<2, 3> &E,
+                                     const Tensor<2, 3> &P,
+                                     const LocalPoint   &point) const
+  {
+    // St Venant-Kirchhoff membrane: S = lambda_ps tr(E) P + 2 mu E, with
+    // point.first = lambda_ps t JxW and point.second = 2 mu t JxW
+    MembraneState state;
+    state.lambda = point.first;
+    state.two_mu = point.second;
+    state.stress = point.first * trace(E) * P + point.second * E;
+    if (!tension_only)
+      return state;
+
+    // Tension-field theory (Pipkin's relaxed energy): a membrane cannot
+    // carry compression, it wrinkles. With the principal Green strains
+    // E1 >= E2 of the tangent plane it is taut while the smaller principal
+    // stress lambda E1 + (lambda + 2 mu) E2 is positive, wrinkled (uniaxial
+    // tension E_Y E1 along n1, W = E_Y E1^2 / 2) while E1 > 0, and slack
+    // otherwise. The relaxed energy is convex and C^1 in F, so the
+    // consistent tangent below is positive semi-definite.
+    const auto principal = eigenvectors(symmetrize(E)); // descending
+    // the normal direction of the membrane is an eigenvector of E with
+    // eigenvalue 0: keep the two tangential pairs
+    std::array<std::pair<double, Tensor<1, 3>>, 2> in_plane;
+    unsigned int                                   n_in_plane = 0;
+    {
+      // the eigenvector most aligned with the normal is dropped
+      unsigned int normal = 0;
+      double       best   = -1;
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const double alignment =
+            (principal[k].second - P * principal[k].second).norm_square();
+          if (alignment > best)
+            {
+              best   = alignment;
+              normal = k;
+            }
+        }
+      for (unsigned int k = 0; k < 3; ++k)
+        if (k != normal)
+          in_plane[n_in_plane++] = principal[k];
+    }
+    const double E1 = in_plane[0].first, E2 = in_plane[1].first;
+    if (point.first * E1 + (point.first + point.second) * E2 > 0)
+      return state; // taut
+    state.regime = E1 > 0 ? MembraneRegime::wrinkled : MembraneRegime::slack;
+    state.stress = Tensor<2, 3>();
+    if (state.regime == MembraneRegime::slack)
+      return state;
+    state.youngs = point.second * (2 * point.first + point.second) /
+                   (point.first + point.second);
+    state.n1     = in_plane[0].second;
+    state.n2     = in_plane[1].second;
+    state.E1     = E1;
+    state.E2     = E2;
+    state.stress = state.youngs * E1 * outer_product(state.n1, state.n1);
+    return state;
+  }
+
+
+  double
+  EmbeddedElasticity::MembraneState::second_derivative(
+    const Tensor<2, 3> &A,
+    const Tensor<2, 3> &B) const
+  {
+    switch (regime)
+      {
+        case MembraneRegime::taut:
+          return lambda * trace(A) * trace(B) + two_mu * scalar_product(A, B);
+        case MembraneRegime::slack:
+          return 0;
+        case MembraneRegime::wrinkled:
+          // W = E_Y E1^2 / 2: d2W = E_Y (dE1)^2 + E_Y E1 d2E1, with
+          // dE1 = n1.A n1 and d2E1 = 2 (n1.A n2)(n1.B n2) / (E1 - E2)
+          return youngs *
+                 ((n1 * (A * n1)) * (n1 * (B * n1)) +
+                  2 * E1 * (n1 * (A * n2)) * (n1 * (B * n2)) / (E1 - E2));
+      }
+    return 0;
   }
 
 

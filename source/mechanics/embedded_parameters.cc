@@ -36,6 +36,15 @@ namespace ssc
                       "0.1",
                       Patterns::Double(0),
                       "Thickness t of a septum, mm (histology: 20-200 um).");
+    prm.declare_entry("Tension field",
+                      "false",
+                      Patterns::Bool(),
+                      "A compressed septum wrinkles instead of carrying "
+                      "compression (tension-field theory, Pipkin's relaxed "
+                      "membrane energy): taut, wrinkled (uniaxial tension) "
+                      "or slack. Finite strain, i.e. with a nonlinear layer "
+                      "model, only; it keeps Newton's tangent positive "
+                      "semi-definite where compressed septa would buckle.");
     prm.declare_entry("Quadrature points",
                       "2",
                       Patterns::Integer(1, 4),
@@ -86,6 +95,7 @@ namespace ssc
     septum_poisson_ratio  = prm.get_double("Poisson's ratio");
     septum_thickness      = prm.get_double("Thickness");
     septum_quadrature     = prm.get_integer("Quadrature points");
+    septum_tension_field  = prm.get_bool("Tension field");
     prm.leave_subsection();
     prm.enter_subsection("Ligaments");
     ligament_stiffness      = prm.get_bool("Stiffness");

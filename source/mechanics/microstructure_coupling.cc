@@ -57,7 +57,8 @@ namespace ssc
       elasticity.get_fe(),
       elasticity.get_mapping(),
       locator->communicator(),
-      kind == EmbeddedKind::cable && parameters.embedded.ligament_tension_only);
+      kind == EmbeddedKind::cable ? parameters.embedded.ligament_tension_only :
+                                    parameters.embedded.septum_tension_field);
     elasticity.attach(*stiffness);
     return stiffness;
   }

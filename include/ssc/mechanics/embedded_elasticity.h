@@ -48,7 +48,8 @@ namespace ssc
    * At finite strain (Newton's method) the same laws act on Green-Lagrange
    * strains (St Venant-Kirchhoff): the membrane strain
    * E = (P F^T F P - P) / 2 and the cable strain e = (|F tau|^2 - 1) / 2,
-   * optionally tension-only for cables (a slack ligament carries nothing).
+   * optionally tension-only: a compressed cable is slack and carries
+   * nothing, a compressed membrane wrinkles (tension-field theory).
    *
    * The quadrature comes split along the locally owned background cells
    * (clipped_quadrature()), so each rank assembles its own cells' part.
@@ -111,6 +112,38 @@ namespace ssc
     std::vector<std::vector<LocalPoint>> points_per_cell;
     unsigned int                         n_global_points;
     const bool                           tension_only;
+
+    /// Taut, wrinkled or slack (tension-field theory).
+    enum class MembraneRegime
+    {
+      taut,
+      wrinkled,
+      slack
+    };
+
+    /// The membrane's stress and second derivative of its energy at one
+    /// point (both already multiplied by t JxW).
+    struct MembraneState
+    {
+      MembraneRegime regime = MembraneRegime::taut;
+      Tensor<2, 3>   stress;
+      double         lambda = 0, two_mu = 0;
+      /// wrinkled: uniaxial modulus, principal strains and directions
+      double       youngs = 0, E1 = 0, E2 = 0;
+      Tensor<1, 3> n1, n2;
+
+      /// d2W/dE2 [A, B] for tangential strain variations A, B.
+      double
+      second_derivative(const Tensor<2, 3> &A, const Tensor<2, 3> &B) const;
+    };
+
+    /// Stress and tangent of the St Venant-Kirchhoff membrane at Green
+    /// strain @p E (tangent projector @p P), relaxed by tension-field
+    /// theory when tension_only is set.
+    MembraneState
+    membrane_state(const Tensor<2, 3> &E,
+                   const Tensor<2, 3> &P,
+                   const LocalPoint   &point) const;
 
     /// FEValues with the cell's embedded points (reference gradients).
     std::unique_ptr<FEValues<3>>

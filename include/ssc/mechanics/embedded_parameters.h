@@ -16,6 +16,7 @@ namespace ssc
     double       septum_poisson_ratio    = 0.3;
     double       septum_thickness        = 0.1;
     unsigned int septum_quadrature       = 2;
+    bool         septum_tension_field    = false;
     bool         ligament_stiffness      = true;
     double       ligament_youngs_modulus = 0.1;
     double       ligament_diameter       = 0.3;
