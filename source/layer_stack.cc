@@ -73,6 +73,22 @@ namespace ssc
   }
 
 
+  std::string
+  to_string(const MaterialModel model)
+  {
+    switch (model)
+      {
+        case MaterialModel::linear:
+          return "linear";
+        case MaterialModel::corotational:
+          return "corotational";
+        case MaterialModel::neo_hookean:
+          return "neo-Hookean";
+      }
+    return "unknown";
+  }
+
+
   double
   Layer::thickness(const double x, const double y) const
   {
@@ -201,8 +217,13 @@ namespace ssc
                           "the SAT, < 1 the flat lobules of the DAT.");
         prm.declare_entry("Material model",
                           "linear",
-                          Patterns::Selection("linear|neo-Hookean"),
+                          Patterns::Selection(
+                            "linear|corotational|neo-Hookean"),
                           "linear: small-strain isotropic elasticity. "
+                          "corotational: the same law on the rotated strain "
+                          "U - I of the polar decomposition F = R U (finite "
+                          "rotations, small stretches; hyperelastic, so "
+                          "Newton's tangent is exact). "
                           "neo-Hookean: compressible neo-Hookean (finite "
                           "strain, isochoric/volumetric split with the same "
                           "small-strain moduli); any nonlinear layer makes the "
@@ -259,6 +280,8 @@ namespace ssc
                   prm.get_double("Lobule vertical stretch"));
         if (prm.get("Material model") == "neo-Hookean")
           layers.back().model = MaterialModel::neo_hookean;
+        else if (prm.get("Material model") == "corotational")
+          layers.back().model = MaterialModel::corotational;
         prm.leave_subsection();
       }
     prm.leave_subsection();

@@ -241,11 +241,11 @@ namespace ssc
     AssertThrow(!embedded.ligament_tension_only || layers.nonlinear(),
                 ExcMessage("Embedded/Ligaments/Tension only needs Newton's "
                            "method: give at least one layer a nonlinear "
-                           "Material model (neo-Hookean)."));
+                           "Material model (corotational or neo-Hookean)."));
     AssertThrow(!embedded.septum_tension_field || layers.nonlinear(),
                 ExcMessage("Embedded/Septa/Tension field needs Newton's "
                            "method: give at least one layer a nonlinear "
-                           "Material model (neo-Hookean)."));
+                           "Material model (corotational or neo-Hookean)."));
     if (microstructure.lobules || microstructure.ligaments)
       {
         // throws unless the region overlaps the patch

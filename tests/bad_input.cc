@@ -120,6 +120,14 @@ main(int argc, char **argv)
         geometry + "subsection Microstructure\n  set Ligaments = true\n"
                    "  subsection Ligaments\n    set Target = deep\n"
                    "    set Density = 1 - 0.1*x\n  end\nend\n");
+  check("tension-field septa with linear layers",
+        std::string(valid_stack) +
+          "subsection Embedded\n  subsection Septa\n"
+          "    set Tension field = true\n  end\nend\n");
+  check("unknown material model",
+        std::string(valid_stack) +
+          "subsection Layer stack\n  subsection fat\n"
+          "    set Material model = Mooney-Rivlin\n  end\nend\n");
   check("missing include", "include no_such_region.prm\n");
   check("include inside a subsection",
         "subsection Mesh\n  include other.prm\nend\n");

@@ -5,7 +5,9 @@
 // central difference of the assembled residual -- for neo-Hookean layers in
 // the displacement formulation and in the mixed one (mean dilatation), and
 // with a tilted finite-strain membrane and a cable embedded, also with the
-// tension-field membrane (taut, wrinkled, slack) and the tension-only cable.
+// tension-field membrane (taut, wrinkled, slack) and the tension-only cable;
+// the same for the corotational law. A rigid rotation by 60 degrees leaves
+// every law stress-free (objectivity).
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -37,8 +39,6 @@ main(int argc, char **argv)
   ssc::LayerStack layers;
   layers.add_layer("skin", ssc::LayerKind::skin, "1 + 0.1*x", 0.02, 0.45, 1);
   layers.add_layer("fat", ssc::LayerKind::SAT, "1.5 - 0.1*y", 0.001, 0.49, 1);
-  for (unsigned int l = 0; l < 2; ++l)
-    layers.set_model(l, ssc::MaterialModel::neo_hookean);
   ssc::MeshParameters mesh_parameters;
   mesh_parameters.patch_length_x  = 2;
   mesh_parameters.patch_length_y  = 2;
@@ -72,18 +72,28 @@ main(int argc, char **argv)
   }
 
   for (const std::string variant :
-       {"displacement",
-        "mixed",
-        "mixed + membrane + cable",
-        "mixed + tension-field membrane + tension-only cable, stretched",
-        "mixed + tension-field membrane + tension-only cable, compressed"})
+       {"neo-Hookean, displacement",
+        "neo-Hookean, mixed",
+        "neo-Hookean, mixed + membrane + cable",
+        "neo-Hookean, mixed + tension-field membrane + tension-only cable, "
+        "stretched",
+        "neo-Hookean, mixed + tension-field membrane + tension-only cable, "
+        "compressed",
+        "corotational, displacement",
+        "corotational, mixed + membrane + cable"})
     {
+      for (unsigned int l = 0; l < 2; ++l)
+        layers.set_model(l,
+                         variant.find("corotational") != std::string::npos ?
+                           ssc::MaterialModel::corotational :
+                           ssc::MaterialModel::neo_hookean);
       const bool   tension_only = variant.find("tension") != std::string::npos;
       const double stretch =
         variant.find("compressed") != std::string::npos ? -0.05 : 0.2;
-      const auto                formulation = variant == "displacement" ?
-                                                ssc::Formulation::displacement :
-                                                ssc::Formulation::mixed;
+      const auto formulation =
+        variant.find("displacement") != std::string::npos ?
+          ssc::Formulation::displacement :
+          ssc::Formulation::mixed;
       ssc::ElasticityParameters parameters;
       parameters.formulation = formulation;
       TimerOutput           timer(MPI_COMM_WORLD,
@@ -128,11 +138,12 @@ main(int argc, char **argv)
       // a uniform stretch (20 %: septum and cable taut) or compression
       // (5 %: the tension-field septum partly wrinkled, partly slack)
       // plus random strains of about 10 %
+      std::map<types::global_dof_index, Point<3>> support;
+      DoFTools::map_dofs_to_support_points(elasticity.get_mapping(),
+                                           elasticity.get_dof_handler(),
+                                           support);
+      std::map<types::global_dof_index, unsigned int> component;
       {
-        std::map<types::global_dof_index, Point<3>> support;
-        DoFTools::map_dofs_to_support_points(elasticity.get_mapping(),
-                                             elasticity.get_dof_handler(),
-                                             support);
         const unsigned int n_per_cell = elasticity.get_fe().n_dofs_per_cell();
         std::vector<types::global_dof_index> dofs(n_per_cell);
         for (const auto &cell :
@@ -140,13 +151,12 @@ main(int argc, char **argv)
           {
             cell->get_dof_indices(dofs);
             for (unsigned int k = 0; k < n_per_cell; ++k)
-              {
-                const unsigned int c =
-                  elasticity.get_fe().system_to_component_index(k).first;
-                u[dofs[k]] = stretch * support[dofs[k]][c];
-              }
+              component[dofs[k]] =
+                elasticity.get_fe().system_to_component_index(k).first;
           }
       }
+      for (const auto &[dof, X] : support)
+        u[dof] = stretch * X[component[dof]];
       for (unsigned int i = 0; i < u.size(); ++i)
         u[i] += uniform(generator);
       u.compress(VectorOperation::insert);
@@ -181,5 +191,32 @@ main(int argc, char **argv)
       deallog << variant << ": largest |K - dr/du| / largest |K| below 1e-6: "
               << (largest_error / largest_entry < 1e-6 ? "yes" : "no")
               << std::endl;
+
+      // objectivity: a rigid rotation by 60 degrees about (1, 2, 3) is
+      // stress-free, so the residual vanishes
+      {
+        const Tensor<1, 3> axis  = Tensor<1, 3>({1., 2., 3.}) / std::sqrt(14.);
+        const double       angle = M_PI / 3.;
+        const Tensor<2, 3> axis_cross({{0., -axis[2], axis[1]},
+                                       {axis[2], 0., -axis[0]},
+                                       {-axis[1], axis[0], 0.}});
+        const Tensor<2, 3> rotation =
+          std::cos(angle) * unit_symmetric_tensor<3>() +
+          std::sin(angle) * axis_cross +
+          (1. - std::cos(angle)) * outer_product(axis, axis);
+        TrilinosWrappers::MPI::Vector rigid(u);
+        for (const auto &[dof, X] : support)
+          rigid[dof] = (rotation * X)[component[dof]] - X[component[dof]];
+        rigid.compress(VectorOperation::insert);
+        elasticity.set_solution(rigid);
+        elasticity.assemble_newton_system(false);
+        deallog << variant
+                << ": rigid rotation, largest |r| / largest |K| below 1e-10: "
+                << (elasticity.get_system_rhs().linfty_norm() / largest_entry <
+                        1e-10 ?
+                      "yes" :
+                      "no")
+                << std::endl;
+      }
     }
 }

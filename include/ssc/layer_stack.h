@@ -17,6 +17,7 @@ namespace ssc
   enum class MaterialModel
   {
     linear,
+    corotational,
     neo_hookean
   };
 
@@ -33,6 +34,10 @@ namespace ssc
   /// Returns the prm spelling of @p kind.
   std::string
   to_string(const LayerKind kind);
+
+  /// Returns the prm spelling of @p model.
+  std::string
+  to_string(const MaterialModel model);
 
   /**
    * One layer of the skin/subcutaneous complex: its thickness map

@@ -17,6 +17,7 @@
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+#include <ssc/mechanics/corotational_material.h>
 #include <ssc/mechanics/linear_elastic_material.h>
 #include <ssc/mechanics/neo_hookean_material.h>
 #include <ssc/mechanics/volume_elasticity.h>
@@ -712,9 +713,18 @@ namespace ssc
     AssertThrow(parameters.formulation != Formulation::enhanced,
                 ExcMessage("Elasticity/Formulation = enhanced is for the "
                            "linear material model only; use mixed with "
-                           "neo-Hookean layers."));
-    const NeoHookeanMaterial material(layer.youngs_modulus,
-                                      layer.poisson_ratio);
+                           "finite-strain (corotational, neo-Hookean) layers."));
+    // the shear part: neo-Hookean in the spatial (Kirchhoff) form or
+    // corotational in the material (first Piola) form; the volumetric part
+    // U(J) is common to both
+    const bool corotational = layer.model == MaterialModel::corotational;
+    const NeoHookeanMaterial   neo_hookean(layer.youngs_modulus,
+                                         layer.poisson_ratio);
+    const CorotationalMaterial corotated(layer.youngs_modulus,
+                                         layer.poisson_ratio);
+    const VolumetricEnergy    &volumetric =
+      corotational ? static_cast<const VolumetricEnergy &>(corotated) :
+                        static_cast<const VolumetricEnergy &>(neo_hookean);
     const bool mean_dilatation = parameters.formulation == Formulation::mixed;
     fe_values.reinit(cell);
     const unsigned int n   = fe.n_dofs_per_cell();
@@ -742,7 +752,11 @@ namespace ssc
     cell_matrix   = 0;
     cell_residual = 0;
     std::vector<Tensor<1, 3>>          g(n); // spatial shape gradients
+    std::vector<Tensor<1, 3>>          g_reference(n);
     std::vector<SymmetricTensor<2, 3>> sym_grad(n), c_sym_grad(n);
+    std::vector<Tensor<2, 3>>          A_grad(n); // A : (e_c (x) g_reference)
+    Tensor<2, 3>                       P;         // corotational
+    Tensor<4, 3>                       A;
     std::vector<unsigned int>          component(n);
     std::vector<double>                b(n, 0.); // int J div(phi_i)
     SymmetricTensor<2, 3>              tau;
@@ -755,23 +769,37 @@ namespace ssc
         const double       JxW   = fe_values.JxW(q);
         const double       J     = determinant(F[q]);
         const Tensor<2, 3> F_inv = invert(F[q]);
-        material.isochoric(F[q], tau, c_iso);
-        const double p = material.pressure(mean_dilatation ? J_bar : J);
+        if (corotational)
+          corotated.deviatoric(F[q], P, A);
+        else
+          neo_hookean.isochoric(F[q], tau, c_iso);
+        const double p = volumetric.pressure(mean_dilatation ? J_bar : J);
         for (unsigned int i = 0; i < n; ++i)
           {
-            g[i] = transpose(F_inv) *
-                   fe_values.shape_grad_component(i, q, component[i]);
-            Tensor<2, 3> G;
-            G[component[i]]  = g[i];
-            sym_grad[i]      = symmetrize(G);
-            c_sym_grad[i]    = c_iso * sym_grad[i];
-            const double div = g[i][component[i]];
-            cell_residual(i) +=
-              ((tau * g[i])[component[i]] + p * J * div) * JxW;
+            const unsigned int ci = component[i];
+            g_reference[i]        = fe_values.shape_grad_component(i, q, ci);
+            g[i]                  = transpose(F_inv) * g_reference[i];
+            const double div      = g[i][ci];
+            if (corotational)
+              {
+                for (unsigned int a = 0; a < 3; ++a)
+                  for (unsigned int c = 0; c < 3; ++c)
+                    A_grad[i][a][c] = A[a][c][ci] * g_reference[i];
+                cell_residual(i) += (P[ci] * g_reference[i]) * JxW;
+              }
+            else
+              {
+                Tensor<2, 3> G;
+                G[ci]         = g[i];
+                sym_grad[i]   = symmetrize(G);
+                c_sym_grad[i] = c_iso * sym_grad[i];
+                cell_residual(i) += (tau * g[i])[ci] * JxW;
+              }
+            cell_residual(i) += p * J * div * JxW;
             b[i] += J * div * JxW;
           }
         const double volumetric_point =
-          mean_dilatation ? 0. : J * J * material.pressure_derivative(J);
+          mean_dilatation ? 0. : J * J * volumetric.pressure_derivative(J);
         for (unsigned int i = 0; i < n; ++i)
           {
             const unsigned int ci    = component[i];
@@ -780,11 +808,16 @@ namespace ssc
               {
                 const unsigned int cj = component[j];
                 double             value =
-                  sym_grad[i] * c_sym_grad[j] +
                   p * J * (g[i][ci] * g[j][cj] - g[i][cj] * g[j][ci]) +
                   volumetric_point * g[i][ci] * g[j][cj];
-                if (ci == cj)
-                  value += tau_g * g[j];
+                if (corotational)
+                  value += A_grad[j][ci] * g_reference[i];
+                else
+                  {
+                    value += sym_grad[i] * c_sym_grad[j];
+                    if (ci == cj)
+                      value += tau_g * g[j];
+                  }
                 cell_matrix(i, j) += value * JxW;
               }
           }
@@ -798,7 +831,7 @@ namespace ssc
       }
     if (mean_dilatation)
       {
-        const double k = material.pressure_derivative(J_bar) / volume;
+        const double k = volumetric.pressure_derivative(J_bar) / volume;
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             cell_matrix(i, j) += k * b[i] * b[j];

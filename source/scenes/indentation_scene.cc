@@ -3,6 +3,7 @@
 
 #include <ssc/background_mesh.h>
 #include <ssc/embedding/point_locator.h>
+#include <ssc/mechanics/corotational_material.h>
 #include <ssc/mechanics/linear_elastic_material.h>
 #include <ssc/mechanics/microstructure_coupling.h>
 #include <ssc/mechanics/neo_hookean_material.h>
@@ -135,17 +136,32 @@ namespace ssc
           const SymmetricTensor<2, 3> eps = symmetrize(H);
           return von_mises(material.stress(eps, trace(eps)));
         }
-      const NeoHookeanMaterial material(layer.youngs_modulus,
-                                        layer.poisson_ratio);
-      const Tensor<2, 3>       F = unit_symmetric_tensor<3>() + H;
-      const double             J = determinant(F);
-      SymmetricTensor<2, 3>    tau;
-      SymmetricTensor<4, 3>    tangent;
+      const Tensor<2, 3> F = unit_symmetric_tensor<3>() + H;
+      const double       J = determinant(F);
       if (!(J > 0))
         return std::numeric_limits<double>::quiet_NaN();
-      material.isochoric(F, tau, tangent);
-      return von_mises(
-        (tau + J * material.pressure(J) * unit_symmetric_tensor<3>()) / J);
+      // Kirchhoff stress tau = P F^T of the shear part plus J p I
+      SymmetricTensor<2, 3> tau;
+      double                pressure;
+      if (layer.model == MaterialModel::corotational)
+        {
+          const CorotationalMaterial material(layer.youngs_modulus,
+                                              layer.poisson_ratio);
+          Tensor<2, 3>               P;
+          Tensor<4, 3>               tangent;
+          material.deviatoric(F, P, tangent);
+          tau      = symmetrize(P * transpose(F));
+          pressure = material.pressure(J);
+        }
+      else
+        {
+          const NeoHookeanMaterial material(layer.youngs_modulus,
+                                            layer.poisson_ratio);
+          SymmetricTensor<4, 3>    tangent;
+          material.isochoric(F, tau, tangent);
+          pressure = material.pressure(J);
+        }
+      return von_mises((tau + J * pressure * unit_symmetric_tensor<3>()) / J);
     }
 
 
@@ -435,9 +451,7 @@ namespace ssc
     std::string models;
     for (unsigned int l = 0; l < parameters.layers.n_layers(); ++l)
       models += (l > 0 ? ", " : "") + parameters.layers.layer(l).name + ": " +
-                (parameters.layers.layer(l).model == MaterialModel::linear ?
-                   "linear" :
-                   "neo-Hookean");
+                to_string(parameters.layers.layer(l).model);
     summary["discretisation"] = {{"degree", parameters.elasticity.degree},
                                  {"formulation",
                                   to_string(parameters.elasticity.formulation)},

@@ -4,6 +4,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <ssc/mechanics/volumetric_energy.h>
+
 #include <cmath>
 
 namespace ssc
@@ -12,23 +14,22 @@ namespace ssc
 
   /**
    * Compressible neo-Hookean material with the isochoric/volumetric split
-   *   Psi = mu/2 (J^{-2/3} I_1 - 3) + U(J),  U(J) = kappa/4 (J^2 - 1 - 2 ln J),
+   *   Psi = mu/2 (J^{-2/3} I_1 - 3) + U(J)  (U: VolumetricEnergy),
    * with mu and kappa = lambda + 2 mu / 3 from (E, nu), so that it agrees
    * with linear elasticity for small strains. The isochoric part is written
    * in the spatial (Kirchhoff) form used by the cell assembly:
    *   tau_iso = mu dev(b_bar),  b_bar = J^{-2/3} F F^T,
    *   c_iso   = 2/3 mu tr(b_bar) (I^s - 1/3 1 (x) 1)
    *             - 2/3 (tau_iso (x) 1 + 1 (x) tau_iso)
-   * (Holzapfel 2000, §6.6; Simo & Hughes 1998). The volumetric part enters
-   * through U'(J) and U''(J), evaluated per quadrature point (displacement
-   * formulation) or with the cell's mean dilatation (mixed formulation).
+   * (Holzapfel 2000, §6.6; Simo & Hughes 1998). The volumetric part is
+   * VolumetricEnergy.
    */
-  class NeoHookeanMaterial
+  class NeoHookeanMaterial : public VolumetricEnergy
   {
   public:
     NeoHookeanMaterial(const double youngs_modulus, const double poisson_ratio)
-      : mu(youngs_modulus / (2. * (1. + poisson_ratio)))
-      , kappa(youngs_modulus / (3. * (1. - 2. * poisson_ratio)))
+      : VolumetricEnergy(youngs_modulus / (3. * (1. - 2. * poisson_ratio)))
+      , mu(youngs_modulus / (2. * (1. + poisson_ratio)))
     {}
 
     /// Isochoric Kirchhoff stress and its spatial tangent for the
@@ -48,31 +49,17 @@ namespace ssc
                 2. / 3. * (outer_product(tau, I) + outer_product(I, tau));
     }
 
-    /// U'(J): the pressure.
-    double
-    pressure(const double J) const
-    {
-      return 0.5 * kappa * (J - 1. / J);
-    }
-
-    /// U''(J).
-    double
-    pressure_derivative(const double J) const
-    {
-      return 0.5 * kappa * (1. + 1. / (J * J));
-    }
-
     /// Strain energy density per reference volume.
     double
     energy(const Tensor<2, 3> &F) const
     {
       const double J = determinant(F);
       return 0.5 * mu * (std::pow(J, -2. / 3.) * scalar_product(F, F) - 3.) +
-             0.25 * kappa * (J * J - 1. - 2. * std::log(J));
+             volumetric_energy(J);
     }
 
+    /// Shear modulus, MPa.
     const double mu;
-    const double kappa;
   };
 } // namespace ssc
 
