@@ -5,8 +5,10 @@
 // method with load steps, against the closed-form solution of this material
 // law: the lateral stretch t solves sigma_yy = 0, i.e.
 //   neo-Hookean:  mu J^{-2/3} (t^2 - (lambda^2 + 2 t^2) / 3) + J U'(J) = 0,
-//   corotational: 2 mu t (t - (lambda + 2 t) / 3) + J U'(J) = 0
-// (F = U = diag(lambda, t, t), R = I), J = lambda t^2, U'(J) = kappa/2
+//   corotational: mu (2 a t^2 - 2/3 a s - 2 b t + 2/3 b (lambda + 2 t))
+//                 + J U'(J) = 0,  a = J^{-2/3}, b = J^{-1/3},
+//                 s = lambda^2 + 2 t^2 (F = U = diag(lambda, t, t), R = I),
+// J = lambda t^2, U'(J) = kappa/2
 // (J - 1/J), and the force is P_xx A_0 = tau_xx / lambda * A_0. The deformation
 // is homogeneous, so the finite elements reproduce it exactly (displacement and
 // mixed formulations). The Newton residuals of the last load step of one case
@@ -50,8 +52,13 @@ closed_form_force(const ssc::MaterialModel model,
       }
     else
       {
-        shear_xx = 2 * mu * lambda * (lambda - (lambda + 2 * t) / 3);
-        shear_yy = 2 * mu * t * (t - (lambda + 2 * t) / 3);
+        // tau = P F^T of mu |J^{-1/3} U - I|^2 with U = F
+        const double a = std::pow(J, -2. / 3.), b = std::pow(J, -1. / 3.);
+        const double s = lambda * lambda + 2 * t * t, T = lambda + 2 * t;
+        shear_xx = mu * (2 * a * lambda * lambda - 2. / 3 * a * s -
+                         2 * b * lambda + 2. / 3 * b * T);
+        shear_yy =
+          mu * (2 * a * t * t - 2. / 3 * a * s - 2 * b * t + 2. / 3 * b * T);
       }
     tau_xx = shear_xx + J_pressure;
     return shear_yy + J_pressure;

@@ -711,9 +711,10 @@ namespace ssc
         return true;
       }
     AssertThrow(parameters.formulation != Formulation::enhanced,
-                ExcMessage("Elasticity/Formulation = enhanced is for the "
-                           "linear material model only; use mixed with "
-                           "finite-strain (corotational, neo-Hookean) layers."));
+                ExcMessage(
+                  "Elasticity/Formulation = enhanced is for the "
+                  "linear material model only; use mixed with "
+                  "finite-strain (corotational, neo-Hookean) layers."));
     // the shear part: neo-Hookean in the spatial (Kirchhoff) form or
     // corotational in the material (first Piola) form; the volumetric part
     // U(J) is common to both
@@ -770,7 +771,7 @@ namespace ssc
         const double       J     = determinant(F[q]);
         const Tensor<2, 3> F_inv = invert(F[q]);
         if (corotational)
-          corotated.deviatoric(F[q], P, A);
+          corotated.isochoric(F[q], P, A);
         else
           neo_hookean.isochoric(F[q], tau, c_iso);
         const double p = volumetric.pressure(mean_dilatation ? J_bar : J);

@@ -149,7 +149,7 @@ namespace ssc
                                               layer.poisson_ratio);
           Tensor<2, 3>               P;
           Tensor<4, 3>               tangent;
-          material.deviatoric(F, P, tangent);
+          material.isochoric(F, P, tangent);
           tau      = symmetrize(P * transpose(F));
           pressure = material.pressure(J);
         }

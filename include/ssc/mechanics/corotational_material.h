@@ -12,17 +12,19 @@ namespace ssc
   /**
    * Corotational linear elasticity written as a hyperelastic law, so that
    * Newton's method gets an exact tangent: with the polar decomposition
-   * F = R U, the small-strain energy is evaluated on the rotated strain
-   * U - I (the "corotated" strain of element-based corotational codes),
-   *   Psi = mu |dev(U - I)|^2 + U(J)  (U(J): VolumetricEnergy),
-   * i.e. mu |dev U|^2 = mu (F:F - (tr U)^2 / 3) for the shear part, whose
-   * first Piola stress is P = 2 mu (F - tr(U)/3 R) since d tr(U)/dF = R.
-   * The volumetric part replaces kappa/2 (tr U - 3)^2 of the textbook form
-   * by U(J): both agree to second order, and U(J) lets the same cell
-   * assembly use the mean dilatation (mixed formulation) against locking
-   * and keeps J > 0. The tangent needs dR: with W = R^T dR (skew, axial
-   * vector w), (tr(U) I - U) w = axial(R^T dF - dF^T R) (McAdams et al.
-   * 2011; Chao et al. 2010).
+   * F = R U, the small-strain energy is evaluated on the rotated stretch
+   * (the "corotated" strain U - I of element-based corotational codes),
+   * split like the neo-Hookean law into an isochoric and a volumetric part,
+   *   Psi = mu |J^{-1/3} U - I|^2 + U(J)  (U(J): VolumetricEnergy).
+   * To second order this is mu |dev eps|^2 + kappa/2 (tr eps)^2, the linear
+   * law, and it is invariant under rotations. The split matters: with the
+   * mean dilatation (mixed formulation) only the cell average of J enters
+   * U(J), and the textbook form mu |U - I|^2 + lambda/2 tr(U - I)^2 would
+   * let single quadrature points invert at finite energy (seen in the
+   * indentation at 0.43 N); J^{-1/3} U makes the energy grow without bound
+   * as J -> 0 at every point. The tangent needs dR: with W = R^T dR (skew,
+   * axial vector w), (tr(U) I - U) w = axial(R^T dF - dF^T R) (Chao et al.
+   * 2010; McAdams et al. 2011).
    */
   class CorotationalMaterial : public VolumetricEnergy
   {
@@ -30,10 +32,10 @@ namespace ssc
     CorotationalMaterial(const double youngs_modulus,
                          const double poisson_ratio);
 
-    /// First Piola stress @p P of the shear part and its derivative
+    /// First Piola stress @p P of the isochoric part and its derivative
     /// @p A = dP/dF (A[i][j][k][l] = dP_ij / dF_kl) at @p F (det F > 0).
     void
-    deviatoric(const Tensor<2, 3> &F, Tensor<2, 3> &P, Tensor<4, 3> &A) const;
+    isochoric(const Tensor<2, 3> &F, Tensor<2, 3> &P, Tensor<4, 3> &A) const;
 
     /// Strain energy density per reference volume.
     double
