@@ -6,7 +6,8 @@
 // the displacement formulation and in the mixed one (mean dilatation), and
 // with a tilted finite-strain membrane and a cable embedded, also with the
 // tension-field membrane (taut, wrinkled, slack) and the tension-only cable;
-// the same for the corotational law. A rigid rotation by 60 degrees leaves
+// the same with a membrane lying in mesh faces and a cable along mesh
+// edges, and for the corotational law. A rigid rotation by 60 degrees leaves
 // every law stress-free (objectivity).
 
 #include <deal.II/base/conditional_ostream.h>
@@ -70,6 +71,30 @@ main(int argc, char **argv)
                                std::vector<CellData<1>>{segment},
                                SubCellData());
   }
+  // a membrane in the mesh faces of the plane x = 0 (through mesh vertices
+  // and along edges) and a cable along the vertical mesh edge x = y = 0
+  Triangulation<2, 3> membrane_on_faces;
+  {
+    std::vector<CellData<2>> triangles(2, CellData<2>(3));
+    triangles[0].vertices = {0, 1, 2};
+    triangles[1].vertices = {0, 2, 3};
+    membrane_on_faces.create_triangulation(
+      std::vector<Point<3>>{Point<3>(0, -1, 0),
+                            Point<3>(0, 1, 0),
+                            Point<3>(0, 1, -2),
+                            Point<3>(0, -1, -2)},
+      triangles,
+      SubCellData());
+  }
+  Triangulation<1, 3> cable_on_edge;
+  {
+    CellData<1> segment;
+    segment.vertices = {0, 1};
+    cable_on_edge.create_triangulation(
+      std::vector<Point<3>>{Point<3>(0, 0, 0), Point<3>(0, 0, -2)},
+      std::vector<CellData<1>>{segment},
+      SubCellData());
+  }
 
   for (const std::string variant :
        {"neo-Hookean, displacement",
@@ -79,6 +104,7 @@ main(int argc, char **argv)
         "stretched",
         "neo-Hookean, mixed + tension-field membrane + tension-only cable, "
         "compressed",
+        "neo-Hookean, mixed + membrane on mesh faces + cable on a mesh edge",
         "corotational, displacement",
         "corotational, mixed + membrane + cable"})
     {
@@ -88,6 +114,7 @@ main(int argc, char **argv)
                            ssc::MaterialModel::corotational :
                            ssc::MaterialModel::neo_hookean);
       const bool   tension_only = variant.find("tension") != std::string::npos;
+      const bool   on_faces     = variant.find("faces") != std::string::npos;
       const double stretch =
         variant.find("compressed") != std::string::npos ? -0.05 : 0.2;
       const auto formulation =
@@ -106,14 +133,15 @@ main(int argc, char **argv)
       elasticity.setup_system({});
       const ssc::PointLocator                  locator(mesh.triangulation(),
                                       elasticity.get_mapping());
-      double                                   covered;
+      double                                   area = 0, length = 0;
       std::unique_ptr<ssc::EmbeddedElasticity> septum, ligament;
       if (variant.find("membrane") != std::string::npos)
         {
           const ssc::EmbeddedMaterial m = {0.1, 0.3, 0.1};
           septum = std::make_unique<ssc::EmbeddedElasticity>(
             ssc::EmbeddedKind::membrane,
-            ssc::clipped_quadrature(membrane, locator, 2, covered),
+            ssc::clipped_quadrature(
+              on_faces ? membrane_on_faces : membrane, locator, 2, area),
             [m](types::material_id) { return m; },
             elasticity.get_fe(),
             elasticity.get_mapping(),
@@ -122,12 +150,16 @@ main(int argc, char **argv)
           const ssc::EmbeddedMaterial c = {0.1, 0., 0.07};
           ligament = std::make_unique<ssc::EmbeddedElasticity>(
             ssc::EmbeddedKind::cable,
-            ssc::clipped_quadrature(cable, locator, 2, covered),
+            ssc::clipped_quadrature(
+              on_faces ? cable_on_edge : cable, locator, 2, length),
             [c](types::material_id) { return c; },
             elasticity.get_fe(),
             elasticity.get_mapping(),
             MPI_COMM_WORLD,
             tension_only);
+          if (on_faces)
+            deallog << variant << ": embedded area " << area << " (exact 4), "
+                    << "length " << length << " (exact 2)" << std::endl;
           elasticity.attach(*septum);
           elasticity.attach(*ligament);
         }

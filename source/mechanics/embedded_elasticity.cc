@@ -244,7 +244,10 @@ namespace ssc
           in_plane[n_in_plane++] = principal[k];
     }
     const double E1 = in_plane[0].first, E2 = in_plane[1].first;
-    if (point.first * E1 + (point.first + point.second) * E2 > 0)
+    // ">=": the undeformed membrane (E = 0, where the relaxed energy has
+    // a kink) gets the taut stiffness, so the first Newton step from rest
+    // sees the septa
+    if (point.first * E1 + (point.first + point.second) * E2 >= 0)
       return state; // taut
     state.regime = E1 > 0 ? MembraneRegime::wrinkled : MembraneRegime::slack;
     state.stress = Tensor<2, 3>();

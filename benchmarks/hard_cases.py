@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""Hard-case suite of the finite-strain solver: each case runs the coarse
+forearm indentation of benchmarks/hard_cases.prm (neo-Hookean layers unless
+the case says otherwise, mean dilatation, tension-field septa, tension-only
+ligaments, force control to 1.8 N) with a few overrides and reports whether
+it converged -- or the clear error it stopped with -- and the cost: load
+steps, Newton and CG iterations, load cuts, wall time on one core.
+
+Writes benchmarks/results/hard_cases.csv and prints a Markdown table.
+
+    /usr/bin/python3 benchmarks/hard_cases.py
+"""
+import csv, json, os, subprocess, sys, tempfile, time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SSC = os.path.join(ROOT, "build", "bin", "ssc")
+PRM = os.path.join(ROOT, "benchmarks", "hard_cases.prm")
+OUT = os.path.join(ROOT, "benchmarks", "results")
+LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
+
+
+def every_layer(name, value):
+    return {f"Layer stack/{l}/{name}": value for l in LAYERS}
+
+
+# soft layers above the muscle: skin 1.2 + SAT 2.5 + SM 0.4 + DAT 2 = 6.1 mm
+CASES = [
+    ("reference: bonded, 1.8 N", {}),
+    ("frictionless punch, 1.8 N", {"Punch/Contact": "frictionless"}),
+    ("corotational, bonded, 1.8 N", every_layer("Material model",
+                                                "corotational")),
+    ("corotational, frictionless, 1.8 N",
+     {**every_layer("Material model", "corotational"),
+      "Punch/Contact": "frictionless"}),
+    ("nu = 0.4999 in every layer", every_layer("Poisson's ratio", "0.4999")),
+    ("stiffness contrast 100:1 (skin E = 100 x fat)",
+     {"Layer stack/skin/Young's modulus": "0.1"}),
+    ("stiffness contrast 1000:1 (skin E = 1000 x fat)",
+     {"Layer stack/skin/Young's modulus": "1"}),
+    ("SM 0.05 mm thick (3 mm cells: aspect 60)",
+     {"Layer stack/SM/Thickness": "0.05"}),
+    ("depth 3.05 mm = 50 % of the soft layers (displacement control)",
+     {"Punch/Control": "displacement", "Punch/Depth": "3.05",
+      "Punch/Load steps": "2"}),
+    ("one load step of 1.8 N (first increment the whole load)",
+     {"Punch/Forces": "1.8", "Nonlinear solver/Initial steps": "1"}),
+    ("septa carrying compression (no tension field)",
+     {"Embedded/Septa/Tension field": "false"}),
+]
+FIELDS = ["case", "converged", "message", "force_N", "depth_mm",
+          "newton_iterations", "linear_iterations", "load_cuts",
+          "wall_time_s", "dofs"]
+
+
+def run(label, overrides, folder, index):
+    name = f"case{index}"
+    args = [SSC, PRM, "-s", f"Run/Output directory={folder}",
+            "-s", f"Run/Name={name}"]
+    for key, value in overrides.items():
+        args += ["-s", f"{key}={value}"]
+    start = time.time()
+    try:
+        result = subprocess.run(args, capture_output=True, text=True,
+                                timeout=1200)
+        status, stderr = result.returncode, result.stderr
+    except subprocess.TimeoutExpired:
+        status, stderr = -1, "timeout after 1200 s"
+    wall = time.time() - start
+    row = dict(case=label, converged="yes" if status == 0 else "no",
+               message="", wall_time_s=f"{wall:.1f}")
+    if status != 0:
+        lines = [l for l in stderr.splitlines() if l.strip()]
+        row["message"] = lines[-1] if lines else f"exit status {status}"
+        return row
+    with open(os.path.join(folder, name, "summary.json")) as f:
+        s = json.load(f)
+    solver = s.get("solver", {})
+    row.update(force_N=s["force_N"][-1] if isinstance(s["force_N"], list)
+               else s["force_N"],
+               depth_mm=f"{(s['depth_mm'][-1] if isinstance(s['depth_mm'], list) else s['depth_mm']):.4f}",
+               newton_iterations=solver.get("newton_iterations", ""),
+               linear_iterations=solver.get("linear_iterations", ""),
+               load_cuts=sum(solver.get("load_cuts_per_step", [])),
+               dofs=s["dofs"])
+    return row
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        for index, (label, overrides) in enumerate(CASES):
+            rows.append(run(label, overrides, folder, index))
+            print(rows[-1], flush=True)
+    with open(os.path.join(OUT, "hard_cases.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=FIELDS)
+        writer.writeheader()
+        writer.writerows(rows)
+    print("| case | converged | force [N] | depth [mm] | Newton | CG | "
+          "cuts | wall [s] |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        print(f"| {r['case']} | {r['converged']}"
+              f"{' (' + r['message'] + ')' if r['message'] else ''} | "
+              f"{r.get('force_N', '')} | {r.get('depth_mm', '')} | "
+              f"{r.get('newton_iterations', '')} | "
+              f"{r.get('linear_iterations', '')} | {r.get('load_cuts', '')}"
+              f" | {r['wall_time_s']} |")
+
+
+if __name__ == "__main__":
+    main()
