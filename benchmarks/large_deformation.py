@@ -29,7 +29,7 @@ LAWS = ["linear", "corotational", "neo-Hookean"]
 CONTACTS = ["bonded", "frictionless"]
 FIELDS = ["law", "contact", "dofs", "step", "force_N", "depth_mm",
           "newton_iterations", "linear_iterations", "load_cuts",
-          "wall_time_s", "total_wall_time_s"]
+          "wall_time_s", "total_wall_time_s", "status"]
 
 
 def run(law, contact, refinements, folder):
@@ -54,9 +54,11 @@ def run(law, contact, refinements, folder):
                             timeout=3600)
     total = time.time() - start
     if result.returncode != 0:
-        print(f"{law}, {contact}: failed\n{result.stdout[-2000:]}"
-              f"{result.stderr[-2000:]}", file=sys.stderr)
-        return []
+        lines = [l for l in result.stderr.splitlines() if "error" in l]
+        message = lines[-1] if lines else f"exit status {result.returncode}"
+        print(f"{law}, {contact}: {message}", flush=True)
+        return [dict(law=law, contact=contact, step="",
+                     total_wall_time_s=f"{total:.1f}", status=message)]
     dofs = next(line.split(":")[1].split("(")[0].strip()
                 for line in result.stdout.splitlines()
                 if line.startswith("Degrees of freedom"))
@@ -71,7 +73,8 @@ def run(law, contact, refinements, folder):
                          linear_iterations=s.get("linear_iterations", 0),
                          load_cuts=s.get("load_cuts", 0),
                          wall_time_s=s.get("wall_time_s", ""),
-                         total_wall_time_s=f"{total:.1f}"))
+                         total_wall_time_s=f"{total:.1f}",
+                         status="converged"))
     print(f"{law}, {contact}: {dofs} DoFs, depth at 1.8 N "
           f"{rows[-1]['depth_mm']} mm, {total:.0f} s", flush=True)
     return rows
@@ -86,7 +89,7 @@ def plot(rows, path):
     for a, contact in zip(ax, CONTACTS):
         for law in LAWS:
             rs = [r for r in rows if r["law"] == law and
-                  r["contact"] == contact]
+                  r["contact"] == contact and r["status"] == "converged"]
             if not rs:
                 continue
             a.plot([0] + [float(r["depth_mm"]) for r in rs],
