@@ -23,8 +23,10 @@
 #include <ssc/mechanics/volume_elasticity.h>
 
 #include <array>
+#include <iomanip>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace ssc
 {
@@ -988,13 +990,14 @@ namespace ssc
       }
     catch (const SolverControl::NoConvergence &e)
       {
-        AssertThrow(false,
-                    ExcMessage("CG did not converge in " +
-                               std::to_string(e.last_step) +
-                               " iterations (residual " +
-                               std::to_string(e.last_residual) +
-                               "); raise Elasticity/Linear solver/Max "
-                               "iterations or check the model."));
+        std::ostringstream message;
+        message << "CG did not converge in " << e.last_step
+                << " iterations (residual " << std::scientific
+                << std::setprecision(2) << e.last_residual << ", target "
+                << control.tolerance()
+                << "); raise Elasticity/Linear solver/Max iterations or "
+                   "check the model.";
+        AssertThrow(false, ExcMessage(message.str()));
       }
     solution_constraints.distribute(solution);
 
