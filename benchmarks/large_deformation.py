@@ -90,6 +90,13 @@ def plot(rows, path):
         for law in LAWS:
             rs = [r for r in rows if r["law"] == law and
                   r["contact"] == contact and r["status"] == "converged"]
+            failed = [r for r in rows if r["law"] == law and
+                      r["contact"] == contact and r["status"] != "converged"]
+            for r in failed:
+                words = r["status"].split("failed at load ")
+                where = (f"stops at {float(words[1].split()[0]):.3f} N"
+                         if len(words) > 1 else "failed")
+                a.plot([], [], " ", label=f"{law}: {where}")
             if not rs:
                 continue
             a.plot([0] + [float(r["depth_mm"]) for r in rs],
