@@ -169,7 +169,7 @@ namespace ssc
           }
         else
           {
-            // E = (P F^T F P - P)/2, S = dW/dE (membrane_stress);
+            // E = (P F^T F P - P)/2, S = dW/dE (membrane_state());
             // dE_i = sym(a_i (x) b_i), a_i = P F^T e_ci, b_i = P g_i
             Tensor<2, 3> P = unit_symmetric_tensor<3>();
             P -= outer_product(d, d);
@@ -218,8 +218,9 @@ namespace ssc
     // E1 >= E2 of the tangent plane it is taut while the smaller principal
     // stress lambda E1 + (lambda + 2 mu) E2 is positive, wrinkled (uniaxial
     // tension E_Y E1 along n1, W = E_Y E1^2 / 2) while E1 > 0, and slack
-    // otherwise. The relaxed energy is convex and C^1 in F, so the
-    // consistent tangent below is positive semi-definite.
+    // otherwise. The relaxed energy is C^1 and its stress positive
+    // semi-definite; so is its consistent tangent (the material part in
+    // second_derivative() and the geometric part b.S b are both >= 0).
     const auto principal = eigenvectors(symmetrize(E)); // descending
     // the normal direction of the membrane is an eigenvector of E with
     // eigenvalue 0: keep the two tangential pairs
