@@ -297,27 +297,39 @@ namespace ssc
 
 
   void
-  VolumeElasticity::build_increment_constraints()
+  VolumeElasticity::build_dirichlet_constraints(
+    AffineConstraints<double>                                    &target,
+    const std::function<double(types::global_dof_index, double)> &value_of)
+    const
   {
-    // the homogeneous constraints, with the rest of the way to the
-    // prescribed values on the Dirichlet dofs (hanging-node and tie chains
-    // resolved again by close())
-    increment_constraints.clear();
-    increment_constraints.reinit(locally_relevant_dofs);
-    increment_constraints.merge(hanging_node_constraints);
+    target.clear();
+    target.reinit(locally_relevant_dofs);
+    target.merge(hanging_node_constraints);
     for (const auto &[dof, value] : dirichlet_values)
       {
-        increment_constraints.add_line(dof);
-        increment_constraints.set_inhomogeneity(
-          dof, dirichlet_scale * value - locally_relevant_solution[dof]);
+        target.add_line(dof);
+        target.set_inhomogeneity(dof, value_of(dof, value));
       }
     for (const auto &line : homogeneous_constraints.get_lines())
-      if (!increment_constraints.is_constrained(line.index))
+      if (!target.is_constrained(line.index))
         {
-          increment_constraints.add_line(line.index);
-          increment_constraints.add_entries(line.index, line.entries);
+          target.add_line(line.index);
+          target.add_entries(line.index, line.entries);
         }
-    increment_constraints.close();
+    target.close();
+  }
+
+
+  void
+  VolumeElasticity::build_increment_constraints()
+  {
+    // the rest of the way to the prescribed values on the Dirichlet dofs
+    build_dirichlet_constraints(increment_constraints,
+                                [this](const types::global_dof_index dof,
+                                       const double                  value) {
+                                  return dirichlet_scale * value -
+                                         locally_relevant_solution[dof];
+                                });
   }
 
 
@@ -337,23 +349,11 @@ namespace ssc
   VolumeElasticity::set_dirichlet_scale(const double factor)
   {
     dirichlet_scale = factor;
-    // the homogeneous constraints with the scaled prescribed values (the
-    // chains through hanging nodes and ties are resolved again by close())
-    constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    constraints.merge(hanging_node_constraints);
-    for (const auto &[dof, value] : dirichlet_values)
-      {
-        constraints.add_line(dof);
-        constraints.set_inhomogeneity(dof, factor * value);
-      }
-    for (const auto &line : homogeneous_constraints.get_lines())
-      if (!constraints.is_constrained(line.index))
-        {
-          constraints.add_line(line.index);
-          constraints.add_entries(line.index, line.entries);
-        }
-    constraints.close();
+    build_dirichlet_constraints(constraints,
+                                [factor](const types::global_dof_index,
+                                         const double value) {
+                                  return factor * value;
+                                });
   }
 
 

@@ -335,6 +335,15 @@ namespace ssc
 
     void
     build_increment_constraints();
+    /// Rebuilds @p target from the hanging-node constraints, the Dirichlet
+    /// dofs with the inhomogeneity @p value_of (dof, prescribed value at
+    /// scale 1) and the remaining homogeneous lines (ties); close()
+    /// resolves the chains through hanging nodes and ties.
+    void
+    build_dirichlet_constraints(
+      AffineConstraints<double>                                    &target,
+      const std::function<double(types::global_dof_index, double)> &value_of)
+      const;
     /// Prescribed values of the Dirichlet dofs for scale 1.
     std::vector<std::pair<types::global_dof_index, double>> dirichlet_values;
     TrilinosWrappers::MPI::Vector                           newton_update;
