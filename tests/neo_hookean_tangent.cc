@@ -7,8 +7,9 @@
 // with a tilted finite-strain membrane and a cable embedded, also with the
 // tension-field membrane (taut, wrinkled, slack) and the tension-only cable;
 // the same with a membrane lying in mesh faces and a cable along mesh
-// edges, and for the corotational law. A rigid rotation by 60 degrees leaves
-// every law stress-free (objectivity).
+// edges, for the corotational law, and for a mean dilatation blended with
+// a share of U(J) at the quadrature points (Volumetric stabilisation). A
+// rigid rotation by 60 degrees leaves every law stress-free (objectivity).
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -99,6 +100,7 @@ main(int argc, char **argv)
   for (const std::string variant :
        {"neo-Hookean, displacement",
         "neo-Hookean, mixed",
+        "neo-Hookean, mixed, volumetric stabilisation 0.1",
         "neo-Hookean, mixed + membrane + cable",
         "neo-Hookean, mixed + tension-field membrane + tension-only cable, "
         "stretched",
@@ -123,6 +125,8 @@ main(int argc, char **argv)
           ssc::Formulation::mixed;
       ssc::ElasticityParameters parameters;
       parameters.formulation = formulation;
+      if (variant.find("stabilisation") != std::string::npos)
+        parameters.volumetric_stabilisation = 0.1;
       TimerOutput           timer(MPI_COMM_WORLD,
                         std::cout,
                         TimerOutput::never,

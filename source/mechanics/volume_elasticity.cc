@@ -729,6 +729,8 @@ namespace ssc
       corotational ? static_cast<const VolumetricEnergy &>(corotated) :
                         static_cast<const VolumetricEnergy &>(neo_hookean);
     const bool mean_dilatation = parameters.formulation == Formulation::mixed;
+    // share of U(J) at the quadrature points (stabilises the mean dilatation)
+    const double beta = parameters.volumetric_stabilisation;
     fe_values.reinit(cell);
     const unsigned int n   = fe.n_dofs_per_cell();
     const unsigned int n_q = fe_values.n_quadrature_points;
@@ -776,7 +778,10 @@ namespace ssc
           corotated.isochoric(F[q], P, A);
         else
           neo_hookean.isochoric(F[q], tau, c_iso);
-        const double p = volumetric.pressure(mean_dilatation ? J_bar : J);
+        const double p = mean_dilatation ?
+                           (1. - beta) * volumetric.pressure(J_bar) +
+                             beta * volumetric.pressure(J) :
+                           volumetric.pressure(J);
         for (unsigned int i = 0; i < n; ++i)
           {
             const unsigned int ci = component[i];
@@ -801,8 +806,8 @@ namespace ssc
             cell_residual(i) += p * J * div * JxW;
             b[i] += J * div * JxW;
           }
-        const double volumetric_point =
-          mean_dilatation ? 0. : J * J * volumetric.pressure_derivative(J);
+        const double volumetric_point = (mean_dilatation ? beta : 1.) * J * J *
+                                        volumetric.pressure_derivative(J);
         for (unsigned int i = 0; i < n; ++i)
           {
             const unsigned int ci    = component[i];
@@ -834,7 +839,8 @@ namespace ssc
       }
     if (mean_dilatation)
       {
-        const double k = volumetric.pressure_derivative(J_bar) / volume;
+        const double k =
+          (1. - beta) * volumetric.pressure_derivative(J_bar) / volume;
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             cell_matrix(i, j) += k * b[i] * b[j];

@@ -42,15 +42,18 @@ namespace ssc
    */
   struct ElasticityParameters
   {
-    unsigned int  degree                = 1;
-    Formulation   formulation           = Formulation::displacement;
-    SideCondition sides                 = SideCondition::roller;
-    double        tolerance             = 1e-8;
-    unsigned int  max_iterations        = 1000;
-    bool          rigid_body_modes      = true;
-    bool          smoothed_aggregation  = true;
-    double        aggregation_threshold = 1e-4;
-    unsigned int  smoother_sweeps       = 2;
+    unsigned int  degree      = 1;
+    Formulation   formulation = Formulation::displacement;
+    SideCondition sides       = SideCondition::roller;
+    /// Finite strain, mixed: fraction of the volumetric energy taken at the
+    /// quadrature points instead of from the cell's mean dilatation.
+    double       volumetric_stabilisation = 0.;
+    double       tolerance                = 1e-8;
+    unsigned int max_iterations           = 1000;
+    bool         rigid_body_modes         = true;
+    bool         smoothed_aggregation     = true;
+    double       aggregation_threshold    = 1e-4;
+    unsigned int smoother_sweeps          = 2;
 
     static void
     declare_parameters(ParameterHandler &prm);
