@@ -93,6 +93,16 @@ namespace ssc
                   std::isfinite(trial) ?
                     "the line search found no decrease of the residual" :
                     "every step of the line search inverts cells";
+                // a limit or bifurcation point shows as negative curvature
+                const double curvature = elasticity.newton_update_curvature();
+                if (curvature < 0)
+                  {
+                    std::ostringstream text;
+                    text << "; the tangent is indefinite along the Newton "
+                            "direction (du.K du/du.du = "
+                         << std::setprecision(3) << curvature << ")";
+                    report.failure += text.str();
+                  }
                 return report;
               }
             step *= 0.5;

@@ -431,6 +431,19 @@ namespace ssc
   }
 
 
+  double
+  VolumeElasticity::newton_update_curvature() const
+  {
+    // with the constrained entries zeroed, du . K du is the quadratic form
+    // of the condensed tangent
+    TrilinosWrappers::MPI::Vector du(newton_update), K_du(newton_update);
+    increment_constraints.set_zero(du);
+    system_matrix.vmult(K_du, du);
+    const double norm = du * du;
+    return norm > 0 ? (du * K_du) / norm : 0.;
+  }
+
+
   void
   VolumeElasticity::store_solution()
   {

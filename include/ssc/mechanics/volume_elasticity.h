@@ -184,6 +184,12 @@ namespace ssc
     LinearSolveReport
     solve_newton_update();
 
+    /// du . K du / du . du for the last update du (free dofs): negative
+    /// when the tangent is indefinite along it, e.g. past a stability
+    /// limit of the discrete problem.
+    double
+    newton_update_curvature() const;
+
     /// Remembers the current solution as the start of a line search.
     void
     store_solution();
