@@ -246,6 +246,20 @@ namespace ssc
                 ExcMessage("Embedded/Septa/Tension field needs Newton's "
                            "method: give at least one layer a nonlinear "
                            "Material model (corotational or neo-Hookean)."));
+    AssertThrow(elasticity.volumetric_stabilisation == 0 ||
+                  (layers.nonlinear() &&
+                   elasticity.formulation == Formulation::mixed),
+                ExcMessage("Elasticity/Volumetric stabilisation acts on the "
+                           "mean dilatation of finite-strain layers: it "
+                           "needs Formulation = mixed and a nonlinear "
+                           "Material model."));
+    AssertThrow(!punch.edge_contact || layers.nonlinear(),
+                ExcMessage("Punch/Edge contact needs Newton's method: give "
+                           "at least one layer a nonlinear Material model "
+                           "(corotational or neo-Hookean)."));
+    AssertThrow(!punch.edge_contact || elasticity.degree == 1,
+                ExcMessage("Punch/Edge contact acts on the vertices of the "
+                           "skin surface: it needs Elasticity/Degree = 1."));
     if (microstructure.lobules || microstructure.ligaments)
       {
         // throws unless the region overlaps the patch

@@ -124,6 +124,21 @@ main(int argc, char **argv)
         std::string(valid_stack) +
           "subsection Embedded\n  subsection Septa\n"
           "    set Tension field = true\n  end\nend\n");
+  check("edge contact with linear layers",
+        std::string(valid_stack) +
+          "subsection Punch\n  set Edge contact = true\nend\n");
+  check("edge radius larger than the punch",
+        std::string(valid_stack) +
+          "subsection Layer stack\n  subsection fat\n"
+          "    set Material model = neo-Hookean\n  end\nend\n"
+          "subsection Punch\n  set Edge contact = true\n"
+          "  set Radius = 2\n  set Edge radius = 3\nend\n");
+  check("volumetric stabilisation without the mean dilatation",
+        std::string(valid_stack) +
+          "subsection Layer stack\n  subsection fat\n"
+          "    set Material model = neo-Hookean\n  end\nend\n"
+          "subsection Elasticity\n  set Volumetric stabilisation = 0.02\n"
+          "end\n");
   check("unknown material model",
         std::string(valid_stack) +
           "subsection Layer stack\n  subsection fat\n"

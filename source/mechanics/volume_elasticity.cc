@@ -79,6 +79,13 @@ namespace ssc
 
 
   void
+  VolumeElasticity::attach(const DofContribution &contribution)
+  {
+    dof_contributions.push_back(&contribution);
+  }
+
+
+  void
   VolumeElasticity::evaluate_at(const std::vector<PointLocation> &locations,
                                 std::vector<Tensor<1, 3>>        &displacements,
                                 std::vector<Tensor<2, 3>> &gradients) const
@@ -289,6 +296,9 @@ namespace ssc
                                     false,
                                     Utilities::MPI::this_mpi_process(
                                       mpi_communicator));
+    for (const DofContribution *contribution : dof_contributions)
+      for (const auto &group : contribution->couplings())
+        constraints.add_entries_local_to_global(group, sparsity, false);
     sparsity.compress();
     system_matrix.reinit(sparsity);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
@@ -410,6 +420,23 @@ namespace ssc
                                                                dofs,
                                                                system_rhs);
         }
+    for (const DofContribution *contribution : dof_contributions)
+      contribution->add_nonlinear(
+        locally_relevant_solution,
+        with_matrix,
+        [&](const std::vector<types::global_dof_index> &block_dofs,
+            const FullMatrix<double>                   &block_matrix,
+            const Vector<double>                       &block_residual) {
+          Vector<double> rhs(block_residual);
+          rhs *= -1.;
+          if (with_matrix)
+            increment_constraints.distribute_local_to_global(
+              block_matrix, rhs, block_dofs, system_matrix, system_rhs);
+          else
+            homogeneous_constraints.distribute_local_to_global(rhs,
+                                                               block_dofs,
+                                                               system_rhs);
+        });
     if (with_matrix)
       system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
@@ -1067,6 +1094,31 @@ namespace ssc
             force[fe.system_to_component_index(i).first] +=
               cell_r(i) * cell_w(i);
         }
+    if (!dof_contributions.empty())
+      {
+        // the blocks' residuals on the condition's dofs (e.g. contact
+        // forces on the punch), by the component of each dof
+        std::map<types::global_dof_index, unsigned int> component;
+        std::vector<types::global_dof_index>            dofs(n);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < n; ++i)
+                component[dofs[i]] = fe.system_to_component_index(i).first;
+            }
+        for (const DofContribution *contribution : dof_contributions)
+          contribution->add_nonlinear(
+            locally_relevant_solution,
+            false,
+            [&](const std::vector<types::global_dof_index> &block_dofs,
+                const FullMatrix<double> &,
+                const Vector<double> &block_residual) {
+              for (unsigned int k = 0; k < block_dofs.size(); ++k)
+                force[component.at(block_dofs[k])] +=
+                  block_residual(k) * weight[block_dofs[k]];
+            });
+      }
     return Utilities::MPI::sum(force, mpi_communicator);
   }
 

@@ -8,6 +8,7 @@
 #include <ssc/mechanics/microstructure_coupling.h>
 #include <ssc/mechanics/neo_hookean_material.h>
 #include <ssc/mechanics/newton_solver.h>
+#include <ssc/mechanics/rigid_punch_contact.h>
 #include <ssc/mechanics/volume_elasticity.h>
 #include <ssc/output.h>
 #include <ssc/scenes/indentation_scene.h>
@@ -256,10 +257,12 @@ namespace ssc
         punch_components.set(0, true);
         punch_components.set(1, true);
       }
-    // the unit load: 1 mm depth or 1 N
-    if (by_force)
+    // the unit load: 1 mm depth or 1 N. The tie's master is also the
+    // punch's height for the edge contact; under displacement control its
+    // dofs are all prescribed, so the tie only names the master.
+    if (by_force || punch.edge_contact)
       ties.push_back({BoundaryId::top, 2, on_punch, Point<3>(0, 0, 0)});
-    else
+    if (!by_force)
       punch_components.set(2, true);
     if (punch_components.n_selected_components() > 0)
       conditions.push_back({BoundaryId::top,
@@ -270,6 +273,28 @@ namespace ssc
     const unsigned int punch_condition =
       by_force ? conditions.size() : conditions.size() - 1;
 
+    std::unique_ptr<RigidPunchContact> edge_contact;
+    if (punch.edge_contact)
+      {
+        TimerOutput::Scope t(timer, "setup");
+        // the surface nodes that wrapping around the edge can bring into
+        // contact: up to a radius plus two edge radii beyond the rim
+        const double reach = 2. * a + 2. * punch.edge_radius;
+        edge_contact       = std::make_unique<RigidPunchContact>(
+          PunchGeometry{Point<2>(0, 0), a, punch.edge_radius},
+          punch.contact_penalty,
+          parameters.layers.layer(0).youngs_modulus,
+          reach,
+          elasticity.get_dof_handler(),
+          elasticity.get_mapping(),
+          BoundaryId::top,
+          [&elasticity]() { return elasticity.master_dof(0); });
+        elasticity.attach(*edge_contact);
+        pcout << "Edge contact: " << edge_contact->n_faces()
+              << " surface faces within " << reach
+              << " mm of the axis, edge radius " << punch.edge_radius << " mm"
+              << std::endl;
+      }
     {
       TimerOutput::Scope t(timer, "setup");
       elasticity.setup_system(conditions, ties);
@@ -287,6 +312,8 @@ namespace ssc
     std::vector<unsigned int> linear_iterations, newton_iterations, cuts;
     std::vector<std::vector<double>> profiles;
     std::vector<std::vector<double>> residual_histories;
+    std::vector<double>              contact_areas;
+    std::vector<double>              contact_penetrations;
     double                           unit_stiffness = 0, unit_force = 1;
     const auto write_fields = [&](const unsigned int step, const double time) {
       if (!run.write_fields)
@@ -385,6 +412,17 @@ namespace ssc
               force = by_force ? loads[step] :
                                  -elasticity.reaction(punch_condition)[2];
             }
+            if (edge_contact)
+              {
+                const auto [area, penetration] =
+                  edge_contact->contact_state(elasticity.solution());
+                contact_areas.push_back(area);
+                contact_penetrations.push_back(penetration);
+                if (!run.test_mode)
+                  pcout << "  edge contact: " << area
+                        << " mm^2 of skin, largest penetration " << penetration
+                        << " mm" << std::endl;
+              }
             const double depth =
               by_force ? -elasticity.dof_value(elasticity.master_dof(0)) :
                          loads[step];
@@ -478,6 +516,12 @@ namespace ssc
     summary["control"] = by_force ? "force" : "displacement";
     summary["contact"] =
       punch.contact == PunchContact::bonded ? "bonded" : "frictionless";
+    if (edge_contact)
+      summary["edge_contact"] = {{"edge_radius_mm", punch.edge_radius},
+                                 {"penalty_factor", punch.contact_penalty},
+                                 {"area_mm2_per_step", contact_areas},
+                                 {"max_penetration_mm_per_step",
+                                  contact_penetrations}};
     summary["punch_radius_mm"]               = a;
     summary["force_N"]                       = forces;
     summary["depth_mm"]                      = depths;

@@ -71,6 +71,28 @@ namespace ssc
                       Patterns::Bool(),
                       "Write the displacement and von Mises stress on the "
                       "vertical plane y = 0 (section.csv, last step).");
+    prm.declare_entry(
+      "Edge contact",
+      "false",
+      Patterns::Bool(),
+      "Finite strain: frictionless penalty contact of the skin beside the "
+      "punch with the punch's rounded edge and face, so that the skin pulled "
+      "down around the punch wraps its edge instead of passing through it. "
+      "Without it the nodes on the rim of the region under the punch can "
+      "slide inwards (frictionless) until Newton stalls.");
+    prm.declare_entry("Edge radius",
+                      "0.5",
+                      Patterns::Double(0),
+                      "Radius (mm) of the rounding of the punch's bottom "
+                      "edge (Edge contact); at most the punch radius.");
+    prm.declare_entry("Contact penalty",
+                      "100",
+                      Patterns::Double(0),
+                      "Penalty factor of the edge contact: a node of "
+                      "surface share A gets the stiffness (factor) E "
+                      "sqrt(A), E the top layer's Young's modulus, so it "
+                      "penetrates about 1/(factor) of a cell size at the "
+                      "contact stress E.");
     prm.leave_subsection();
   }
 
@@ -89,10 +111,18 @@ namespace ssc
     load_steps = prm.get_integer("Load steps");
     forces     = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Forces")));
-    profile_length = prm.get_double("Profile length");
-    profile_points = prm.get_integer("Profile points");
-    section        = prm.get_bool("Section");
+    profile_length  = prm.get_double("Profile length");
+    profile_points  = prm.get_integer("Profile points");
+    section         = prm.get_bool("Section");
+    edge_contact    = prm.get_bool("Edge contact");
+    edge_radius     = prm.get_double("Edge radius");
+    contact_penalty = prm.get_double("Contact penalty");
     prm.leave_subsection();
+    AssertThrow(!edge_contact || (edge_radius > 0 && edge_radius <= radius),
+                ExcMessage("Punch/Edge radius must be positive and at most "
+                           "Punch/Radius."));
+    AssertThrow(!edge_contact || contact_penalty > 0,
+                ExcMessage("Punch/Contact penalty must be positive."));
     AssertThrow(radius > 0, ExcMessage("Punch/Radius must be positive (mm)."));
     if (control == PunchControl::force)
       {

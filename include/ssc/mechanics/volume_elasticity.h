@@ -26,6 +26,7 @@
 #include <ssc/embedding/point_locator.h>
 #include <ssc/layer_stack.h>
 #include <ssc/mechanics/cell_contribution.h>
+#include <ssc/mechanics/dof_contribution.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 
 #include <functional>
@@ -98,6 +99,11 @@ namespace ssc
     /// from now on; it must outlive this object's assemblies.
     void
     attach(const CellContribution &contribution);
+
+    /// Adds @p contribution (e.g. punch contact) to the sparsity pattern
+    /// and the Newton systems; attach before setup_system().
+    void
+    attach(const DofContribution &contribution);
 
     const Mapping<3> &
     get_mapping() const
@@ -222,9 +228,10 @@ namespace ssc
 
     /**
      * Reaction force (N) on the dofs held by condition @p condition_index:
-     * the residual K u - f of the unconstrained cell contributions, summed
-     * with weights of a unit field on those dofs (virtual work; consistent
-     * with hanging nodes). This is the force the body exerts against the
+     * the residual K u - f of the unconstrained cell contributions and of
+     * the attached dof contributions (e.g. punch contact), summed with
+     * weights of a unit field on those dofs (virtual work; consistent with
+     * hanging nodes). This is the force the body exerts against the
      * boundary condition; the force applied by it is its negative.
      */
     Tensor<1, 3>
@@ -362,6 +369,7 @@ namespace ssc
     TrilinosWrappers::PreconditionAMG     preconditioner;
     std::unique_ptr<Epetra_MultiVector>   near_null_space;
     std::vector<const CellContribution *> contributions;
+    std::vector<const DofContribution *>  dof_contributions;
   };
 } // namespace ssc
 

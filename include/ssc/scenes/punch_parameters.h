@@ -36,6 +36,9 @@ namespace ssc
     double              profile_length = 30;
     unsigned int        profile_points = 301;
     bool                section        = true;
+    bool                edge_contact   = false;
+    double              edge_radius    = 0.5;
+    double              contact_penalty = 100;
 
     /// The loads of the steps: depths (mm) or forces (N).
     std::vector<double>

@@ -1,0 +1,50 @@
+#ifndef ssc_mechanics_dof_contribution_h
+#define ssc_mechanics_dof_contribution_h
+
+#include <deal.II/base/types.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <vector>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  /**
+   * Something that acts on a few individual dofs rather than on cells, e.g.
+   * the contact of skin nodes with a rigid punch whose position is itself a
+   * dof. The volume elasticity adds its couplings to the sparsity pattern
+   * and its blocks to the Newton system, through the same constraints as
+   * the cells.
+   */
+  class DofContribution
+  {
+  public:
+    /// Receives one dense block: its dofs, tangent and residual (internal
+    /// force minus load, ordered like the dofs).
+    using BlockSink =
+      std::function<void(const std::vector<types::global_dof_index> &,
+                         const FullMatrix<double> &,
+                         const Vector<double> &)>;
+
+    virtual ~DofContribution() = default;
+
+    /// The dof groups that may form a block (those of this rank), for the
+    /// sparsity pattern; called once the dofs and ties exist.
+    virtual std::vector<std::vector<types::global_dof_index>>
+    couplings() const = 0;
+
+    /// The blocks at the (locally relevant) solution @p u; @p with_tangent
+    /// false: only the residuals are needed.
+    virtual void
+    add_nonlinear(const TrilinosWrappers::MPI::Vector &u,
+                  const bool                           with_tangent,
+                  const BlockSink                     &add) const = 0;
+  };
+} // namespace ssc
+
+#endif

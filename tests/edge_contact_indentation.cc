@@ -1,0 +1,61 @@
+// The frictionless punch at finite strain with the edge contact
+// (Punch/Edge contact): on the coarse forearm indentation (neo-Hookean
+// layers, mean dilatation, tension-field septa, tension-only ligaments)
+// force control goes past 0.336 N, where Newton stalled without the
+// contact because the skin passed through the punch's edge, to 0.5 N; the
+// skin is then in contact with the rounded edge; and prescribing the depth
+// found for 0.5 N gives back 0.5 N, so the contact forces on the punch are
+// counted the same way under force and under displacement control.
+
+#include <ssc/parameters.h>
+#include <ssc/scenes/indentation_scene.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "tests.h"
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  const auto run = [](const std::vector<std::string> &extra) {
+    ssc::Parameters          parameters;
+    std::vector<std::string> overrides = {"Punch/Contact=frictionless",
+                                          "Punch/Edge contact=true",
+                                          "Punch/Profile length=0",
+                                          "Punch/Section=false"};
+    overrides.insert(overrides.end(), extra.begin(), extra.end());
+    parameters.read(SOURCE_DIR "/indentation_neo_hookean.prm", overrides);
+    return ssc::IndentationScene(parameters, MPI_COMM_WORLD).run();
+  };
+  const auto by_force = run({"Punch/Control=force",
+                             "Punch/Forces=0.35, 0.5",
+                             "Run/Name=edge_contact_force"});
+  std::ifstream  file("results/edge_contact_force/summary.json");
+  nlohmann::json summary = nlohmann::json::parse(file);
+  const double   area = summary["edge_contact"]["area_mm2_per_step"].back();
+  dealii::deallog << "force control: 0.5 N at depth " << std::setprecision(4)
+                  << by_force.depths.back()
+                  << " mm; skin in contact with the edge (area above 1 "
+                     "mm^2): "
+                  << (area > 1. ? "yes" : "no") << std::endl;
+
+  std::ostringstream depth;
+  depth << std::setprecision(17) << by_force.depths.back();
+  const auto by_depth = run({"Punch/Control=displacement",
+                             "Punch/Depth=" + depth.str(),
+                             "Punch/Load steps=2",
+                             "Run/Name=edge_contact_depth"});
+  dealii::deallog << "displacement control to that depth: relative "
+                     "difference from 0.5 N below 1e-6: "
+                  << (std::abs(by_depth.forces.back() / 0.5 - 1.) < 1e-6 ?
+                        "yes" :
+                        "no")
+                  << std::endl;
+}
