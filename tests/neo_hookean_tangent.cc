@@ -29,6 +29,7 @@
 #include <map>
 #include <random>
 
+#include "tangent_check.h"
 #include "tests.h"
 
 using namespace dealii;
@@ -196,34 +197,8 @@ main(int argc, char **argv)
       for (unsigned int i = 0; i < u.size(); ++i)
         u[i] += uniform(generator);
       u.compress(VectorOperation::insert);
-      elasticity.set_solution(u);
-      elasticity.assemble_newton_system(true);
-      const auto &K = elasticity.get_system_matrix();
-
-      double       largest_error = 0, largest_entry = 0;
-      const double h = 1e-6;
-      for (unsigned int j = 0; j < u.size(); j += 7)
-        {
-          TrilinosWrappers::MPI::Vector plus(u), minus(u);
-          plus[j] += h;
-          minus[j] -= h;
-          plus.compress(VectorOperation::insert);
-          minus.compress(VectorOperation::insert);
-          elasticity.set_solution(plus);
-          elasticity.assemble_newton_system(false);
-          TrilinosWrappers::MPI::Vector r_plus(elasticity.get_system_rhs());
-          elasticity.set_solution(minus);
-          elasticity.assemble_newton_system(false);
-          TrilinosWrappers::MPI::Vector r_minus(elasticity.get_system_rhs());
-          for (unsigned int i = 0; i < u.size(); ++i)
-            {
-              // system_rhs = -r, so dr/du_j = -(rhs+ - rhs-) / 2h
-              const double difference = -(r_plus[i] - r_minus[i]) / (2 * h);
-              largest_error =
-                std::max(largest_error, std::abs(K.el(i, j) - difference));
-              largest_entry = std::max(largest_entry, std::abs(K.el(i, j)));
-            }
-        }
+      const auto [largest_error, largest_entry] =
+        tangent_error(elasticity, u, 1e-6, 7);
       deallog << variant << ": largest |K - dr/du| / largest |K| below 1e-6: "
               << (largest_error / largest_entry < 1e-6 ? "yes" : "no")
               << std::endl;

@@ -396,6 +396,21 @@ namespace ssc
     Vector<double>     cell_residual(n), cell_u(n);
     std::vector<types::global_dof_index> dofs(n);
     unsigned int                         inverted = 0;
+    // adds a block (tangent, residual r) as -r to the right-hand side
+    const auto add_block =
+      [&](const std::vector<types::global_dof_index> &block_dofs,
+          const FullMatrix<double>                   &block_matrix,
+          const Vector<double>                       &block_residual) {
+        Vector<double> rhs(block_residual);
+        rhs *= -1.;
+        if (with_matrix)
+          increment_constraints.distribute_local_to_global(
+            block_matrix, rhs, block_dofs, system_matrix, system_rhs);
+        else
+          homogeneous_constraints.distribute_local_to_global(rhs,
+                                                             block_dofs,
+                                                             system_rhs);
+      };
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -410,33 +425,13 @@ namespace ssc
               ++inverted;
               continue;
             }
-          cell_residual *= -1.;
           cell->get_dof_indices(dofs);
-          if (with_matrix)
-            increment_constraints.distribute_local_to_global(
-              cell_matrix, cell_residual, dofs, system_matrix, system_rhs);
-          else
-            homogeneous_constraints.distribute_local_to_global(cell_residual,
-                                                               dofs,
-                                                               system_rhs);
+          add_block(dofs, cell_matrix, cell_residual);
         }
     for (const DofContribution *contribution : dof_contributions)
-      contribution->add_nonlinear(
-        locally_relevant_solution,
-        with_matrix,
-        [&](const std::vector<types::global_dof_index> &block_dofs,
-            const FullMatrix<double>                   &block_matrix,
-            const Vector<double>                       &block_residual) {
-          Vector<double> rhs(block_residual);
-          rhs *= -1.;
-          if (with_matrix)
-            increment_constraints.distribute_local_to_global(
-              block_matrix, rhs, block_dofs, system_matrix, system_rhs);
-          else
-            homogeneous_constraints.distribute_local_to_global(rhs,
-                                                               block_dofs,
-                                                               system_rhs);
-        });
+      contribution->add_nonlinear(locally_relevant_solution,
+                                  with_matrix,
+                                  add_block);
     if (with_matrix)
       system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
