@@ -7,10 +7,9 @@
 // found for 0.5 N gives back 0.5 N, so the contact forces on the punch are
 // counted the same way under force and under displacement control.
 
+#include <nlohmann/json.hpp>
 #include <ssc/parameters.h>
 #include <ssc/scenes/indentation_scene.h>
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <fstream>
@@ -34,12 +33,12 @@ main(int argc, char **argv)
     parameters.read(SOURCE_DIR "/indentation_neo_hookean.prm", overrides);
     return ssc::IndentationScene(parameters, MPI_COMM_WORLD).run();
   };
-  const auto by_force = run({"Punch/Control=force",
-                             "Punch/Forces=0.35, 0.5",
-                             "Run/Name=edge_contact_force"});
+  const auto     by_force = run({"Punch/Control=force",
+                                 "Punch/Forces=0.35, 0.5",
+                                 "Run/Name=edge_contact_force"});
   std::ifstream  file("results/edge_contact_force/summary.json");
   nlohmann::json summary = nlohmann::json::parse(file);
-  const double   area = summary["edge_contact"]["area_mm2_per_step"].back();
+  const double   area    = summary["edge_contact"]["area_mm2_per_step"].back();
   dealii::deallog << "force control: 0.5 N at depth " << std::setprecision(4)
                   << by_force.depths.back()
                   << " mm; skin in contact with the edge (area above 1 "
