@@ -20,7 +20,7 @@ Writes benchmarks/results/large_deformation.csv and .png.
     /usr/bin/python3 benchmarks/large_deformation.py [--refinements N]
                                                      [--plot-only]
 """
-import csv, os, subprocess, sys, tempfile, time
+import csv, os, re, subprocess, sys, tempfile, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SSC = os.path.join(ROOT, "build", "bin", "ssc")
@@ -60,8 +60,7 @@ def run(law, contact, refinements, folder):
         lines = [l for l in result.stderr.splitlines() if "error" in l]
         message = lines[-1] if lines else f"exit status {result.returncode}"
         print(f"{law}, {contact}: {message}", flush=True)
-        return [dict(law=law, contact=contact, step="",
-                     total_wall_time_s=f"{total:.1f}", status=message)]
+        return stopped_run_rows(law, contact, result.stdout, message, total)
     dofs = next(line.split(":")[1].split("(")[0].strip()
                 for line in result.stdout.splitlines()
                 if line.startswith("Degrees of freedom"))
@@ -80,6 +79,28 @@ def run(law, contact, refinements, folder):
                          status="converged"))
     print(f"{law}, {contact}: {dofs} DoFs, depth at 1.8 N "
           f"{rows[-1]['depth_mm']} mm, {total:.0f} s", flush=True)
+    return rows
+
+
+def stopped_run_rows(law, contact, log, message, total):
+    """The load steps a stopped run converged (from its log) and a last
+    row with the error."""
+    step_line = re.compile(
+        r"Load step (\d+) of \d+: force (\S+) N, depth (\S+) mm "
+        r"\(\d+ increments, (\d+) cut, (\d+) Newton iterations, "
+        r"(\d+) CG iterations\)")
+    dofs = next((line.split(":")[1].split("(")[0].strip()
+                 for line in log.splitlines()
+                 if line.startswith("Degrees of freedom")), "")
+    rows = []
+    for m in step_line.finditer(log):
+        rows.append(dict(law=law, contact=contact, dofs=dofs, step=m[1],
+                         force_N=m[2], depth_mm=m[3], load_cuts=m[4],
+                         newton_iterations=m[5], linear_iterations=m[6],
+                         total_wall_time_s=f"{total:.1f}",
+                         status="converged"))
+    rows.append(dict(law=law, contact=contact, dofs=dofs, step="",
+                     total_wall_time_s=f"{total:.1f}", status=message))
     return rows
 
 
