@@ -258,8 +258,8 @@ namespace ssc
                            "at least one layer a nonlinear Material model "
                            "(corotational or neo-Hookean)."));
     AssertThrow(!punch.edge_contact || elasticity.degree == 1,
-                ExcMessage("Punch/Edge contact acts on the vertices of the "
-                           "skin surface: it needs Elasticity/Degree = 1."));
+                ExcMessage("Punch/Edge contact is implemented for Q1: set "
+                           "Elasticity/Degree = 1."));
     if (microstructure.lobules || microstructure.ligaments)
       {
         // throws unless the region overlaps the patch

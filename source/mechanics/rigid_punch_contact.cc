@@ -7,7 +7,6 @@
 #include <ssc/mechanics/rigid_punch_contact.h>
 
 #include <cmath>
-#include <map>
 
 namespace ssc
 {

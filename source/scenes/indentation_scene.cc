@@ -277,7 +277,7 @@ namespace ssc
     if (punch.edge_contact)
       {
         TimerOutput::Scope t(timer, "setup");
-        // the surface nodes that wrapping around the edge can bring into
+        // the surface faces that wrapping around the edge can bring into
         // contact: up to a radius plus two edge radii beyond the rim
         const double reach = 2. * a + 2. * punch.edge_radius;
         edge_contact       = std::make_unique<RigidPunchContact>(

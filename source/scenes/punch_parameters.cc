@@ -78,8 +78,8 @@ namespace ssc
       "Finite strain: frictionless penalty contact of the skin beside the "
       "punch with the punch's rounded edge and face, so that the skin pulled "
       "down around the punch wraps its edge instead of passing through it. "
-      "Without it the nodes on the rim of the region under the punch can "
-      "slide inwards (frictionless) until Newton stalls.");
+      "Without it a frictionless punch loses the support of its rim at a "
+      "few mm depth and Newton stalls (benchmarks/README.md).");
     prm.declare_entry("Edge radius",
                       "0.5",
                       Patterns::Double(0),
@@ -88,11 +88,11 @@ namespace ssc
     prm.declare_entry("Contact penalty",
                       "100",
                       Patterns::Double(0),
-                      "Penalty factor of the edge contact: a node of "
-                      "surface share A gets the stiffness (factor) E "
-                      "sqrt(A), E the top layer's Young's modulus, so it "
-                      "penetrates about 1/(factor) of a cell size at the "
-                      "contact stress E.");
+                      "Penalty factor of the edge contact: the contact "
+                      "pressure is (factor) E / h times the penetration, E "
+                      "the top layer's Young's modulus and h the size of "
+                      "the surface face, so the skin penetrates about "
+                      "h/(factor) at the contact pressure E.");
     prm.leave_subsection();
   }
 
