@@ -111,7 +111,7 @@ namespace ssc
                   contact_face.components.push_back(
                     fe.system_to_component_index(i).first);
                 }
-            const double penalty =
+            contact_face.penalty =
               penalty_factor * youngs_modulus / std::sqrt(face->measure());
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
@@ -121,7 +121,6 @@ namespace ssc
                 for (const unsigned int i : local)
                   values.push_back(fe_face_values.shape_value(i, q));
                 contact_face.shape_values.push_back(values);
-                contact_face.weights.push_back(penalty * fe_face_values.JxW(q));
                 contact_face.areas.push_back(fe_face_values.JxW(q));
               }
             faces.push_back(std::move(contact_face));
@@ -203,7 +202,7 @@ namespace ssc
           return gap.hessian[a][b] * Nk * Nl;
         };
         // energy eps/2 g^2: residual eps g dg, tangent eps (dg dg + g ddg)
-        const double w = face.weights[q];
+        const double w = face.penalty * face.areas[q];
         for (unsigned int k = 0; k <= n; ++k)
           {
             residual(k) += w * gap.value * dg[k];

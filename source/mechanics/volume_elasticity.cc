@@ -209,6 +209,22 @@ namespace ssc
       locally_relevant_solution.reinit(locally_owned_dofs,
                                        locally_relevant_dofs,
                                        mpi_communicator);
+    relevant_components.assign(locally_relevant_dofs.n_elements(), 0);
+    {
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              relevant_components[locally_relevant_dofs.index_within_set(
+                dofs[i])] = fe.system_to_component_index(i).first;
+          }
+      // a master may lie on cells this rank does not see
+      for (unsigned int t = 0; t < ties.size(); ++t)
+        relevant_components[locally_relevant_dofs.index_within_set(
+          tie_masters[t])] = ties[t].component;
+    }
 
     hanging_node_constraints.clear();
     hanging_node_constraints.reinit(locally_relevant_dofs);
@@ -943,22 +959,12 @@ namespace ssc
     near_null_space       = std::make_unique<Epetra_MultiVector>(map, 6);
     std::map<types::global_dof_index, Point<3>> support_points;
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
-    std::vector<unsigned char> component(locally_relevant_dofs.n_elements());
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            component[locally_relevant_dofs.index_within_set(dofs[i])] =
-              fe.system_to_component_index(i).first;
-        }
     unsigned int local = 0;
     for (const auto dof : locally_owned_dofs)
       {
         const Point<3>    &x = support_points.at(dof);
         const unsigned int c =
-          component[locally_relevant_dofs.index_within_set(dof)];
+          relevant_components[locally_relevant_dofs.index_within_set(dof)];
         for (unsigned int m = 0; m < 3; ++m)
           (*near_null_space)[m][local] = (c == m ? 1. : 0.);
         // rotations about x, y, z: omega x X
@@ -1093,15 +1099,6 @@ namespace ssc
       {
         // the blocks' residuals on the condition's dofs (e.g. contact
         // forces on the punch), by the component of each dof
-        std::map<types::global_dof_index, unsigned int> component;
-        std::vector<types::global_dof_index>            dofs(n);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (!cell->is_artificial())
-            {
-              cell->get_dof_indices(dofs);
-              for (unsigned int i = 0; i < n; ++i)
-                component[dofs[i]] = fe.system_to_component_index(i).first;
-            }
         for (const DofContribution *contribution : dof_contributions)
           contribution->add_nonlinear(
             locally_relevant_solution,
@@ -1110,7 +1107,9 @@ namespace ssc
                 const FullMatrix<double> &,
                 const Vector<double> &block_residual) {
               for (unsigned int k = 0; k < block_dofs.size(); ++k)
-                force[component.at(block_dofs[k])] +=
+                force
+                  [relevant_components[locally_relevant_dofs.index_within_set(
+                    block_dofs[k])]] +=
                   block_residual(k) * weight[block_dofs[k]];
             });
       }

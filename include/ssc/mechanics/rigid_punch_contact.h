@@ -97,17 +97,17 @@ namespace ssc
     n_faces() const;
 
   private:
-    /// A top face near the punch: its displacement dofs and, at each
-    /// quadrature point, the reference position, the values of those
-    /// dofs' shape functions and the penalty times the area weight.
+    /// A top face near the punch: its displacement dofs, its penalty eps
+    /// and, at each quadrature point, the reference position, the values
+    /// of those dofs' shape functions and the area weight JxW.
     struct Face
     {
       std::vector<types::global_dof_index> dofs;
       std::vector<unsigned int>            components;
+      double                               penalty = 0;
       std::vector<Point<3>>                points;
       std::vector<std::vector<double>>     shape_values; // [q][k]
-      std::vector<double>                  weights;      // eps JxW
-      std::vector<double>                  areas;        // JxW
+      std::vector<double>                  areas;
     };
 
     /// Calls @p f(face, q, gap) for every quadrature point that

@@ -337,6 +337,9 @@ namespace ssc
     /// ties that setup_system() adds to locally_relevant_dofs.
     IndexSet                             mesh_relevant_dofs;
     std::vector<types::global_dof_index> tie_masters;
+    /// Displacement component of each locally relevant dof (ordered like
+    /// locally_relevant_dofs, tie masters included).
+    std::vector<unsigned char> relevant_components;
 
     AffineConstraints<double> hanging_node_constraints;
     AffineConstraints<double> constraints;
