@@ -8,8 +8,10 @@
 // tension-field membrane (taut, wrinkled, slack) and the tension-only cable;
 // the same with a membrane lying in mesh faces and a cable along mesh
 // edges, for the corotational law, and for a mean dilatation blended with
-// a share of U(J) at the quadrature points (Volumetric stabilisation). A
-// rigid rotation by 60 degrees leaves every law stress-free (objectivity).
+// a share of U(J) at the quadrature points (Volumetric stabilisation), and
+// with a volumetric growth that varies within the cells. A rigid rotation
+// by 60 degrees leaves every law stress-free (objectivity); with a uniform
+// growth g, so does the rotated expansion by (1 + g)^{1/3}.
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -109,7 +111,9 @@ main(int argc, char **argv)
         "compressed",
         "neo-Hookean, mixed + membrane on mesh faces + cable on a mesh edge",
         "corotational, displacement",
-        "corotational, mixed + membrane + cable"})
+        "corotational, mixed + membrane + cable",
+        "neo-Hookean, mixed, growth",
+        "corotational, displacement, growth"})
     {
       for (unsigned int l = 0; l < 2; ++l)
         layers.set_model(l,
@@ -117,6 +121,7 @@ main(int argc, char **argv)
                            ssc::MaterialModel::corotational :
                            ssc::MaterialModel::neo_hookean);
       const bool   tension_only = variant.find("tension") != std::string::npos;
+      const bool   growth       = variant.find("growth") != std::string::npos;
       const bool   on_faces     = variant.find("faces") != std::string::npos;
       const double stretch =
         variant.find("compressed") != std::string::npos ? -0.05 : 0.2;
@@ -169,6 +174,12 @@ main(int argc, char **argv)
           elasticity.attach(*ligament);
         }
 
+      // a growth that varies within the cells
+      if (growth)
+        elasticity.set_growth([](const Point<3> &p, const unsigned int) {
+          return 0.3 + 0.2 * p[0] - 0.1 * p[2];
+        });
+
       std::mt19937                           generator(5);
       std::uniform_real_distribution<double> uniform(-0.05, 0.05);
       TrilinosWrappers::MPI::Vector          u = elasticity.get_solution();
@@ -215,14 +226,23 @@ main(int argc, char **argv)
           std::cos(angle) * unit_symmetric_tensor<3>() +
           std::sin(angle) * axis_cross +
           (1. - std::cos(angle)) * outer_product(axis, axis);
+        // with a uniform growth g the stress-free state is the rotation
+        // of the expansion (1 + g)^{1/3} X
+        const double expansion = growth ? std::cbrt(1.4) : 1.;
+        if (growth)
+          elasticity.set_growth(
+            [](const Point<3> &, const unsigned int) { return 0.4; });
         TrilinosWrappers::MPI::Vector rigid(u);
         for (const auto &[dof, X] : support)
-          rigid[dof] = (rotation * X)[component[dof]] - X[component[dof]];
+          rigid[dof] =
+            expansion * (rotation * X)[component[dof]] - X[component[dof]];
         rigid.compress(VectorOperation::insert);
         elasticity.set_solution(rigid);
         elasticity.assemble_newton_system(false);
         deallog << variant
-                << ": rigid rotation, largest |r| / largest |K| below 1e-10: "
+                << (growth ? ": uniform growth 0.4, rotated expansion" :
+                             ": rigid rotation")
+                << ", largest |r| / largest |K| below 1e-10: "
                 << (elasticity.get_system_rhs().linfty_norm() / largest_entry <
                         1e-10 ?
                       "yes" :

@@ -51,6 +51,23 @@ namespace ssc
                       Patterns::Integer(1, 100),
                       "An increment that converged in at most this many "
                       "Newton iterations is easy.");
+    prm.declare_entry(
+      "Continuation iterations",
+      "100",
+      Patterns::Integer(0, 10000),
+      "When the line search finds no decrease (past a stability limit, "
+      "where the tangent is indefinite), Newton's method continues with "
+      "the tangent shifted by a multiple of its diagonal (pseudo-transient "
+      "continuation) for at most this many iterations per increment; 0 "
+      "turns it off and cuts the increment instead.");
+    prm.declare_entry("Continuation shift",
+                      "0.1",
+                      Patterns::Double(0),
+                      "First shift of the pseudo-transient continuation, as "
+                      "a multiple of the tangent's diagonal; it then "
+                      "follows the residual (switched evolution "
+                      "relaxation). Newton's method takes over again once "
+                      "the residual has dropped tenfold.");
     prm.leave_subsection();
   }
 
@@ -59,15 +76,20 @@ namespace ssc
   NewtonParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Nonlinear solver");
-    max_iterations     = prm.get_integer("Max iterations");
-    relative_tolerance = prm.get_double("Relative tolerance");
-    absolute_tolerance = prm.get_double("Absolute tolerance");
-    line_search        = prm.get_bool("Line search");
-    max_line_search    = prm.get_integer("Max line search steps");
-    initial_steps      = prm.get_integer("Initial steps");
-    minimum_increment  = prm.get_double("Minimum increment");
-    growth_factor      = prm.get_double("Growth factor");
-    easy_iterations    = prm.get_integer("Easy iterations");
+    max_iterations          = prm.get_integer("Max iterations");
+    relative_tolerance      = prm.get_double("Relative tolerance");
+    absolute_tolerance      = prm.get_double("Absolute tolerance");
+    line_search             = prm.get_bool("Line search");
+    max_line_search         = prm.get_integer("Max line search steps");
+    initial_steps           = prm.get_integer("Initial steps");
+    minimum_increment       = prm.get_double("Minimum increment");
+    growth_factor           = prm.get_double("Growth factor");
+    easy_iterations         = prm.get_integer("Easy iterations");
+    continuation_iterations = prm.get_integer("Continuation iterations");
+    continuation_shift      = prm.get_double("Continuation shift");
+    AssertThrow(continuation_iterations == 0 || continuation_shift > 0,
+                ExcMessage("Nonlinear solver/Continuation shift must be "
+                           "positive when Continuation iterations is not 0."));
     prm.leave_subsection();
   }
 } // namespace ssc

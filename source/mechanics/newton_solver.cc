@@ -46,13 +46,30 @@ namespace ssc
       pcout << "    Newton: residual " << std::scientific
             << std::setprecision(3) << residual << std::defaultfloat
             << std::endl;
+    // the pseudo-transient shift: 0 is Newton's method with line search;
+    // the continuation hands back to Newton once it has lowered the
+    // residual tenfold, and resumes with its last shift if Newton fails
+    double       shift = 0., last_shift = 0., continuation_start = 0.;
+    unsigned int continuation_iterations = 0;
+    unsigned int newton_iterations       = 0;
+    const auto   continuation_exhausted  = [&]() {
+      return continuation_iterations >= parameters.continuation_iterations;
+    };
     while (gap > gap_tolerance || residual > target)
       {
-        if (report.iterations == parameters.max_iterations)
+        if (newton_iterations == parameters.max_iterations)
           {
             report.failure = "no convergence in " +
                              std::to_string(parameters.max_iterations) +
                              " iterations";
+            return report;
+          }
+        if (shift > 0 && continuation_exhausted())
+          {
+            report.failure =
+              "the pseudo-transient continuation did not converge in " +
+              std::to_string(parameters.continuation_iterations) +
+              " iterations";
             return report;
           }
         elasticity.assemble_newton_system(true, nodal_forces);
@@ -61,10 +78,12 @@ namespace ssc
         if (report.iterations == 0)
           load_scale =
             std::max(load_scale, elasticity.get_system_rhs().l2_norm());
+        if (shift > 0)
+          elasticity.shift_tangent(shift);
         try
           {
             report.linear_iterations +=
-              elasticity.solve_newton_update().iterations;
+              elasticity.solve_newton_update(0.1 * target).iterations;
           }
         catch (const ExceptionBase &e)
           {
@@ -75,26 +94,67 @@ namespace ssc
             return report;
           }
         elasticity.store_solution();
-        // A step that reaches the prescribed displacements is taken whole;
-        // otherwise backtrack until the residual decreases.
         const bool closing = gap > gap_tolerance;
         double     step = 1., trial = 0.;
-        for (unsigned int k = 0;; ++k)
+        if (shift > 0)
           {
-            elasticity.set_solution_from_stored(step);
+            // Pseudo-transient continuation: the whole step of the shifted
+            // tangent, unless it inverts cells; the shift follows the
+            // residual (switched evolution relaxation) and is dropped once
+            // it is small, which gives back Newton's convergence.
+            ++continuation_iterations;
+            elasticity.set_solution_from_stored(1.);
             trial = elasticity.assemble_newton_system(false, nodal_forces);
-            if (closing || !parameters.line_search ||
-                trial <= (1. - 1e-4 * step) * residual || trial <= target)
-              break;
-            if (k + 1 == parameters.max_line_search)
+            if (!std::isfinite(trial))
               {
                 elasticity.restore_solution();
+                shift *= 10.;
+                continue;
+              }
+            shift *= trial / residual;
+            last_shift = shift;
+            if (trial < 0.1 * continuation_start)
+              shift = 0.;
+          }
+        else
+          {
+            ++newton_iterations;
+            // A step that reaches the prescribed displacements is taken
+            // whole; otherwise backtrack until the residual decreases.
+            for (unsigned int k = 0;; ++k)
+              {
+                elasticity.set_solution_from_stored(step);
+                trial = elasticity.assemble_newton_system(false, nodal_forces);
+                if (closing || !parameters.line_search ||
+                    trial <= (1. - 1e-4 * step) * residual || trial <= target)
+                  break;
+                if (k + 1 == parameters.max_line_search)
+                  break;
+                step *= 0.5;
+              }
+            if (!closing && parameters.line_search &&
+                trial > (1. - 1e-4 * step) * residual && trial > target)
+              {
+                elasticity.restore_solution();
+                // a limit or bifurcation point shows as negative curvature
+                const double curvature = elasticity.newton_update_curvature();
+                if (!continuation_exhausted())
+                  {
+                    // past a stability limit Newton's direction need not
+                    // lower the residual: continue with a shifted tangent
+                    shift              = last_shift > 0 ? last_shift :
+                                                          parameters.continuation_shift;
+                    continuation_start = residual;
+                    if (verbose)
+                      pcout << "    line search failed (du.K du/du.du = "
+                            << std::setprecision(3) << curvature
+                            << "): pseudo-transient continuation" << std::endl;
+                    continue;
+                  }
                 report.failure =
                   std::isfinite(trial) ?
                     "the line search found no decrease of the residual" :
                     "every step of the line search inverts cells";
-                // a limit or bifurcation point shows as negative curvature
-                const double curvature = elasticity.newton_update_curvature();
                 if (curvature < 0)
                   {
                     std::ostringstream text;
@@ -105,17 +165,19 @@ namespace ssc
                   }
                 return report;
               }
-            step *= 0.5;
           }
         ++report.iterations;
         residual = trial;
         gap      = elasticity.dirichlet_gap();
         report.residuals.push_back(residual);
         if (verbose)
-          pcout << "    Newton iteration " << report.iterations << ": residual "
+          pcout << "    " << (shift > 0 ? "Continuation" : "Newton")
+                << " iteration " << report.iterations << ": residual "
                 << std::scientific << std::setprecision(3) << residual
                 << std::defaultfloat
                 << (step < 1. ? ", step " + std::to_string(step) :
+                                std::string())
+                << (shift > 0 ? ", shift " + std::to_string(shift) :
                                 std::string())
                 << std::endl;
         if (!std::isfinite(residual))

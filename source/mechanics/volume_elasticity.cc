@@ -461,11 +461,111 @@ namespace ssc
   }
 
 
+  void
+  VolumeElasticity::set_growth(
+    const std::function<double(const Point<3> &, const unsigned int)> &growth)
+  {
+    const unsigned int n_q = cell_quadrature.size();
+    growth_values.assign(mesh.triangulation().n_active_cells() * n_q, 0.);
+    FEValues<3> fe_values(mapping,
+                          fe,
+                          cell_quadrature,
+                          update_quadrature_points);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double g =
+                growth(fe_values.quadrature_point(q), cell->material_id());
+              AssertThrow(g > -1.,
+                          ExcMessage("A growth ratio g <= -1 would remove "
+                                     "all the material."));
+              growth_values[cell->active_cell_index() * n_q + q] = g;
+            }
+        }
+    growth_scale = 1.;
+  }
+
+
+  void
+  VolumeElasticity::set_growth_scale(const double scale)
+  {
+    growth_scale = scale;
+  }
+
+
+  double
+  VolumeElasticity::growth_volume() const
+  {
+    double      volume = 0;
+    FEValues<3> fe_values(mapping, fe, cell_quadrature, update_JxW_values);
+    if (!growth_values.empty())
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            for (unsigned int q = 0; q < cell_quadrature.size(); ++q)
+              volume += growth_values[cell->active_cell_index() *
+                                        cell_quadrature.size() +
+                                      q] *
+                        fe_values.JxW(q);
+          }
+    return Utilities::MPI::sum(volume, mpi_communicator);
+  }
+
+
+  double
+  VolumeElasticity::volume_change() const
+  {
+    FEValues<3>                      fe_values(mapping,
+                          fe,
+                          cell_quadrature,
+                          update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<2, 3>>        gradients(cell_quadrature.size());
+    double                           change = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_gradients(
+            locally_relevant_solution, gradients);
+          const bool linear =
+            layers.layer(cell->material_id()).model == MaterialModel::linear;
+          for (unsigned int q = 0; q < cell_quadrature.size(); ++q)
+            change +=
+              (linear ?
+                 trace(gradients[q]) :
+                 determinant(unit_symmetric_tensor<3>() + gradients[q]) - 1.) *
+              fe_values.JxW(q);
+        }
+    return Utilities::MPI::sum(change, mpi_communicator);
+  }
+
+
   LinearSolveReport
-  VolumeElasticity::solve_newton_update()
+  VolumeElasticity::solve_newton_update(const double absolute_floor)
   {
     newton_update = 0;
-    return solve_linear_system(newton_update, increment_constraints);
+    return solve_linear_system(newton_update,
+                               increment_constraints,
+                               absolute_floor);
+  }
+
+
+  void
+  VolumeElasticity::shift_tangent(const double shift)
+  {
+    // read the diagonal before the first add leaves the matrix uncompressed
+    std::vector<std::pair<types::global_dof_index, double>> additions;
+    for (const types::global_dof_index row : locally_owned_dofs)
+      if (!increment_constraints.is_constrained(row))
+        additions.emplace_back(row, shift * system_matrix.diag_element(row));
+    for (const auto &[row, value] : additions)
+      system_matrix.add(row, row, value);
+    system_matrix.compress(VectorOperation::add);
   }
 
 
@@ -639,7 +739,13 @@ namespace ssc
     std::vector<SymmetricTensor<2, 3>> eps(n_modes);
     std::vector<double>                div(n_modes);
     Vector<double>                     force(3);
-    const Tensor<2, 3> J0 = enhanced ? centre_jacobian(cell) : Tensor<2, 3>();
+    // the eigenstrain (g/3) I of growth loads the (projected) volumetric
+    // strain: kappa g div_bar(phi_i) over the strain modes
+    const double        kappa = material.lambda + 2. / 3. * material.mu;
+    Vector<double>      growth_rhs(n_modes);
+    std::vector<double> growth_moments(n_p, 0.); // int q_a g
+    bool                grows = false;
+    const Tensor<2, 3>  J0 = enhanced ? centre_jacobian(cell) : Tensor<2, 3>();
 
     for (unsigned int q = 0; q < n_q; ++q)
       {
@@ -666,8 +772,12 @@ namespace ssc
           }
         // 2 mu dev(eps):dev(eps) + kappa div div, kappa = lambda + 2 mu / 3;
         // the mixed formulations project the divergence instead (B-bar)
-        const double kappa_q =
-          mixed ? 0. : material.lambda + 2. / 3. * material.mu;
+        const double kappa_q = mixed ? 0. : kappa;
+        const double g       = growth_at(cell, q);
+        grows                = grows || g != 0.;
+        if (!mixed)
+          for (unsigned int i = 0; i < n_modes; ++i)
+            growth_rhs(i) += kappa * g * div[i] * JxW;
         for (unsigned int i = 0; i < n_modes; ++i)
           for (unsigned int j = 0; j <= i; ++j)
             matrix(i, j) +=
@@ -697,6 +807,7 @@ namespace ssc
                   mass(a, b) += q_basis[a] * q_basis[b] * JxW;
                 for (unsigned int i = 0; i < n_modes; ++i)
                   coupling(a, i) += q_basis[a] * div[i] * JxW;
+                growth_moments[a] += q_basis[a] * g * JxW;
               }
           }
       }
@@ -713,7 +824,10 @@ namespace ssc
         mass.mmult(m_inv_b, coupling);
         FullMatrix<double> volumetric(n_modes, n_modes);
         coupling.Tmmult(volumetric, m_inv_b);
-        matrix.add(material.lambda + 2. / 3. * material.mu, volumetric);
+        matrix.add(kappa, volumetric);
+        for (unsigned int i = 0; i < n_modes; ++i)
+          for (unsigned int a = 0; a < n_p; ++a)
+            growth_rhs(i) += kappa * m_inv_b(a, i) * growth_moments[a];
       }
 
     if (enhanced)
@@ -734,11 +848,28 @@ namespace ssc
         for (unsigned int i = 0; i < n_dofs; ++i)
           for (unsigned int j = 0; j < n_dofs; ++j)
             cell_matrix(i, j) = matrix(i, j) - correction(i, j);
+        if (grows)
+          {
+            // the condensed load f_u - K_ua K_aa^{-1} f_a
+            Vector<double> f_a(n_a), K_aa_inv_f_a(n_a);
+            for (unsigned int a = 0; a < n_a; ++a)
+              f_a(a) = growth_rhs(n_dofs + a);
+            K_aa.vmult(K_aa_inv_f_a, f_a);
+            Vector<double> f_correction(n_dofs);
+            K_ua.vmult(f_correction, K_aa_inv_f_a);
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              cell_rhs(i) += growth_rhs(i) - f_correction(i);
+          }
       }
     else
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        for (unsigned int j = 0; j < n_dofs; ++j)
-          cell_matrix(i, j) = matrix(i, j);
+      {
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            cell_matrix(i, j) = matrix(i, j);
+        if (grows)
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            cell_rhs(i) += growth_rhs(i);
+      }
 
     for (const CellContribution *contribution : contributions)
       contribution->add_to_cell(cell, cell_matrix, cell_rhs);
@@ -800,7 +931,8 @@ namespace ssc
         const double J = determinant(F[q]);
         if (!(J > 0))
           return false;
-        volume += fe_values.JxW(q);
+        // growth: the cell's stress-free volume
+        volume += (1. + growth_at(cell, q)) * fe_values.JxW(q);
         current_volume += J * fe_values.JxW(q);
       }
     const double J_bar = current_volume / volume;
@@ -825,14 +957,27 @@ namespace ssc
         const double       JxW   = fe_values.JxW(q);
         const double       J     = determinant(F[q]);
         const Tensor<2, 3> F_inv = invert(F[q]);
+        // Growth F_g = gamma^{1/3} I with the energy gamma W(F F_g^{-1}):
+        // the isochoric parts depend on J^{-1/3} F only, so they are
+        // scaled by gamma; the volumetric part sees J_e = J / gamma.
+        const double gamma = 1. + growth_at(cell, q);
         if (corotational)
-          corotated.isochoric(F[q], P, A);
+          {
+            corotated.isochoric(F[q], P, A);
+            P *= gamma;
+            A *= gamma;
+          }
         else
-          neo_hookean.isochoric(F[q], tau, c_iso);
-        const double p = mean_dilatation ?
-                           (1. - beta) * volumetric.pressure(J_bar) +
-                             beta * volumetric.pressure(J) :
-                           volumetric.pressure(J);
+          {
+            neo_hookean.isochoric(F[q], tau, c_iso);
+            tau *= gamma;
+            c_iso *= gamma;
+          }
+        const double J_e = J / gamma;
+        const double p   = mean_dilatation ?
+                             (1. - beta) * volumetric.pressure(J_bar) +
+                             beta * volumetric.pressure(J_e) :
+                             volumetric.pressure(J_e);
         for (unsigned int i = 0; i < n; ++i)
           {
             const unsigned int ci = component[i];
@@ -858,7 +1003,8 @@ namespace ssc
             b[i] += J * div * JxW;
           }
         const double volumetric_point = (mean_dilatation ? beta : 1.) * J * J *
-                                        volumetric.pressure_derivative(J);
+                                        volumetric.pressure_derivative(J_e) /
+                                        gamma;
         for (unsigned int i = 0; i < n; ++i)
           {
             const unsigned int ci    = component[i];
@@ -1002,13 +1148,15 @@ namespace ssc
   LinearSolveReport
   VolumeElasticity::solve_linear_system(
     TrilinosWrappers::MPI::Vector   &solution,
-    const AffineConstraints<double> &solution_constraints)
+    const AffineConstraints<double> &solution_constraints,
+    const double                     absolute_floor)
   {
     TimerOutput::Scope t(timer, "solve");
     setup_preconditioner();
     solution_constraints.set_zero(solution);
-    const double  target = parameters.tolerance * system_rhs.l2_norm();
-    SolverControl control(parameters.max_iterations,
+    const double target =
+      std::max(parameters.tolerance * system_rhs.l2_norm(), absolute_floor);
+    SolverControl              control(parameters.max_iterations,
                           std::max(target, 1e-300),
                           false,
                           false);

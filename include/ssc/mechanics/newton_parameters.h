@@ -11,15 +11,17 @@ namespace ssc
   /// "Nonlinear solver").
   struct NewtonParameters
   {
-    unsigned int max_iterations     = 25;
-    double       relative_tolerance = 1e-8;
-    double       absolute_tolerance = 1e-12;
-    bool         line_search        = true;
-    unsigned int max_line_search    = 8;
-    unsigned int initial_steps      = 4;
-    double       minimum_increment  = 1e-4;
-    double       growth_factor      = 1.5;
-    unsigned int easy_iterations    = 4;
+    unsigned int max_iterations          = 25;
+    double       relative_tolerance      = 1e-8;
+    double       absolute_tolerance      = 1e-12;
+    bool         line_search             = true;
+    unsigned int max_line_search         = 8;
+    unsigned int initial_steps           = 4;
+    double       minimum_increment       = 1e-4;
+    double       growth_factor           = 1.5;
+    unsigned int easy_iterations         = 4;
+    unsigned int continuation_iterations = 100;
+    double       continuation_shift      = 0.1;
 
     static void
     declare_parameters(ParameterHandler &prm);

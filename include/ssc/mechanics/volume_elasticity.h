@@ -149,6 +149,33 @@ namespace ssc
     void
     scale_solution(const double factor);
 
+    /**
+     * Isotropic volumetric growth: the material at reference point X takes
+     * the stress-free volume (1 + s g(X)) dX, s the growth scale. At finite
+     * strain F = F_e F_g with F_g = (1 + s g)^{1/3} I and the energy
+     * (1 + s g) W(F_e); at small strain the eigenstrain (s g / 3) I. @p
+     * growth (of the point and the cell's layer) is sampled once at the
+     * assembly's quadrature points of the locally owned cells; the scale
+     * starts at 1.
+     */
+    void
+    set_growth(const std::function<double(const Point<3> &, const unsigned int)>
+                 &growth);
+
+    /// The growth scale s (a load parameter for Newton's method).
+    void
+    set_growth_scale(const double scale);
+
+    /// The stress-free added volume at scale 1, integral of g (mm^3), with
+    /// the assembly's quadrature (all ranks).
+    double
+    growth_volume() const;
+
+    /// The change of the body's volume, the integral of det F - 1 (of
+    /// div u for the linear law) over the mesh (mm^3, all ranks).
+    double
+    volume_change() const;
+
     /// @name Newton's method (finite strain; the linear law is the special
     /// case that converges in one iteration)
     /// @{
@@ -186,9 +213,20 @@ namespace ssc
                         &nodal_forces = {},
       const Function<3> *body_force   = nullptr);
 
-    /// Solves K du = -r (CG + AMG, homogeneous constraints).
+    /// Solves K du = -r (CG + AMG, homogeneous constraints) to the linear
+    /// solver's relative tolerance, but not below @p absolute_floor (N):
+    /// near a converged state the relative target can fall below what
+    /// round-off lets CG reach, while Newton only needs the update to be
+    /// well inside its own tolerance.
     LinearSolveReport
-    solve_newton_update();
+    solve_newton_update(const double absolute_floor = 0.);
+
+    /// Adds @p shift times its own diagonal to the tangent (free rows):
+    /// K + shift D is positive definite for a large enough shift where K
+    /// is not, which is what the pseudo-transient continuation of the
+    /// Newton solver needs past a stability limit.
+    void
+    shift_tangent(const double shift);
 
     /// du . K du / du . du for the last update du (free dofs): negative
     /// when the tangent is indefinite along it, e.g. past a stability
@@ -313,10 +351,12 @@ namespace ssc
     setup_preconditioner();
 
     /// CG + AMG for the current system_matrix and system_rhs into
-    /// @p solution (a warm start), then the constraints applied.
+    /// @p solution (a warm start), to the relative tolerance but not below
+    /// @p absolute_floor, then the constraints applied.
     LinearSolveReport
     solve_linear_system(TrilinosWrappers::MPI::Vector   &solution,
-                        const AffineConstraints<double> &solution_constraints);
+                        const AffineConstraints<double> &solution_constraints,
+                        const double                     absolute_floor = 0.);
 
     BackgroundMesh             &mesh;
     const LayerStack           &layers;
@@ -366,11 +406,27 @@ namespace ssc
     TrilinosWrappers::MPI::Vector                           stored_solution;
     std::vector<IndexSet> constrained_dofs_per_condition;
 
-    TrilinosWrappers::SparseMatrix        system_matrix;
-    TrilinosWrappers::MPI::Vector         system_rhs;
-    TrilinosWrappers::MPI::Vector         locally_relevant_solution;
-    TrilinosWrappers::PreconditionAMG     preconditioner;
-    std::unique_ptr<Epetra_MultiVector>   near_null_space;
+    TrilinosWrappers::SparseMatrix      system_matrix;
+    TrilinosWrappers::MPI::Vector       system_rhs;
+    TrilinosWrappers::MPI::Vector       locally_relevant_solution;
+    TrilinosWrappers::PreconditionAMG   preconditioner;
+    std::unique_ptr<Epetra_MultiVector> near_null_space;
+    /// g at the quadrature points, cell by cell (active cell index times
+    /// the points per cell); empty without growth.
+    std::vector<double> growth_values;
+    double              growth_scale = 1.;
+    /// The growth ratio s g at point @p q of @p cell (0 without growth).
+    double
+    growth_at(const typename DoFHandler<3>::active_cell_iterator &cell,
+              const unsigned int                                  q) const
+    {
+      return growth_values.empty() ?
+               0. :
+               growth_scale * growth_values[cell->active_cell_index() *
+                                              cell_quadrature.size() +
+                                            q];
+    }
+
     std::vector<const CellContribution *> contributions;
     std::vector<const DofContribution *>  dof_contributions;
   };
