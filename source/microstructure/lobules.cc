@@ -226,6 +226,10 @@ namespace ssc
     const std::vector<VoronoiCell> cells =
       compute_clipped_voronoi(box, seeds, true, result.diagnostics);
 
+    result.sites = seeds;
+    result.site_lobule =
+      std::vector<unsigned int>(n, numbers::invalid_unsigned_int);
+    result.reference_height = S;
     const LayerReferenceMap   map(layers, layer, S);
     std::vector<unsigned int> id(n, numbers::invalid_unsigned_int);
     unsigned int              next_id = first_id;
@@ -235,7 +239,8 @@ namespace ssc
           physical_volume_and_centroid(cells[i], map);
         if (!parameters.region.contains(centroid[0], centroid[1]))
           continue;
-        id[i] = next_id++;
+        id[i]                 = next_id++;
+        result.site_lobule[i] = result.lobules.size();
         result.lobules.push_back(
           {id[i],
            layer,

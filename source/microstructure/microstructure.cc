@@ -9,6 +9,7 @@
 #include <ssc/microstructure/microstructure.h>
 #include <ssc/output.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -57,8 +58,69 @@ namespace ssc
         if (progress)
           progress("Skin ligaments: " + std::to_string(all_ligaments.size()));
       }
+    cut_fasciotomy();
+    if (progress && parameters.fasciotomy.enabled)
+      {
+        std::ostringstream line;
+        line << "Fasciotomy: cut " << n_cut_septa << " septa ("
+             << cut_septa_area << " mm^2) and " << n_cut_ligaments
+             << " ligaments within " << parameters.fasciotomy.radius
+             << " mm of (" << parameters.fasciotomy.centre << ")";
+        progress(line.str());
+      }
     create_septa_mesh();
     create_ligament_mesh();
+  }
+
+
+  Point<3>
+  Microstructure::centroid(const Septum &septum)
+  {
+    Point<3> sum;
+    double   area = 0;
+    for (const auto &t : septum.triangles)
+      {
+        const double a =
+          0.5 * cross_product_3d(t[1] - t[0], t[2] - t[0]).norm();
+        sum += a / 3. * (t[0] + t[1] + t[2]);
+        area += a;
+      }
+    return area > 0 ? Point<3>(sum / area) : septum.triangles.front()[0];
+  }
+
+
+  void
+  Microstructure::cut_fasciotomy()
+  {
+    n_cut_septa = n_cut_ligaments = 0;
+    cut_septa_area                = 0;
+    const Fasciotomy &release     = parameters.fasciotomy;
+    if (!release.enabled)
+      return;
+    const auto inside = [&release](const Septum &septum) {
+      const Point<3> c = centroid(septum);
+      return release.cuts(c[0], c[1]);
+    };
+    for (const Septum &septum : all_septa)
+      if (inside(septum))
+        {
+          ++n_cut_septa;
+          cut_septa_area += septum.area;
+        }
+    const auto erase_if = [](auto &container, const auto &predicate) {
+      container.erase(std::remove_if(container.begin(),
+                                     container.end(),
+                                     predicate),
+                      container.end());
+    };
+    erase_if(all_septa, inside);
+    for (auto &layer : layer_lobules)
+      erase_if(layer.septa, inside);
+    const std::size_t before = all_ligaments.size();
+    erase_if(all_ligaments, [&release](const Ligament &ligament) {
+      return release.cuts(ligament.top[0], ligament.top[1]);
+    });
+    n_cut_ligaments = before - all_ligaments.size();
   }
 
 
@@ -260,6 +322,15 @@ namespace ssc
             {"septa_triangles", septa_triangulation.n_active_cells()},
             {"ligaments", all_ligaments.size()},
             {"ligament_segments", n_segments},
-            {"layers", layers_json}};
+            {"layers", layers_json},
+            {"fasciotomy",
+             {{"enabled", parameters.fasciotomy.enabled},
+              {"centre_mm",
+               {parameters.fasciotomy.centre[0],
+                parameters.fasciotomy.centre[1]}},
+              {"radius_mm", parameters.fasciotomy.radius},
+              {"cut_septa", n_cut_septa},
+              {"cut_septa_area_mm2", cut_septa_area},
+              {"cut_ligaments", n_cut_ligaments}}}};
   }
 } // namespace ssc

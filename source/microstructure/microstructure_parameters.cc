@@ -145,6 +145,28 @@ namespace ssc
                       Patterns::Double(0),
                       "Radius of the cylinder, mm.");
     prm.leave_subsection();
+    prm.enter_subsection("Fasciotomy");
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "Surgical release at a site: the septa whose "
+                      "area-weighted centroid and the skin ligaments whose "
+                      "axis lie within Radius of the vertical axis through "
+                      "the centre are cut (removed). Run a scene with and "
+                      "without it to see what the release changes.");
+    prm.declare_entry("Centre x",
+                      "0",
+                      Patterns::Double(),
+                      "x of the release site, mm.");
+    prm.declare_entry("Centre y",
+                      "0",
+                      Patterns::Double(),
+                      "y of the release site, mm.");
+    prm.declare_entry("Radius",
+                      "5",
+                      Patterns::Double(0),
+                      "Radius of the released cylinder, mm.");
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -188,6 +210,19 @@ namespace ssc
     AssertThrow(region.shape != RegionShape::cylinder || region.radius > 0,
                 ExcMessage("Microstructure/Region of interest: a cylinder "
                            "needs a positive radius."));
+    prm.leave_subsection();
+    prm.enter_subsection("Fasciotomy");
+    fasciotomy.enabled = prm.get_bool("Enabled");
+    fasciotomy.centre =
+      Point<2>(prm.get_double("Centre x"), prm.get_double("Centre y"));
+    fasciotomy.radius = prm.get_double("Radius");
+    AssertThrow(!fasciotomy.enabled || fasciotomy.radius > 0,
+                ExcMessage("Microstructure/Fasciotomy/Radius must be "
+                           "positive (mm)."));
+    AssertThrow(!fasciotomy.enabled || lobules || ligaments,
+                ExcMessage("Microstructure/Fasciotomy is enabled, but there "
+                           "is nothing to cut: switch on Microstructure/"
+                           "Lobules or Ligaments."));
     prm.leave_subsection();
     prm.leave_subsection();
   }

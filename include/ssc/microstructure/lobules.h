@@ -45,6 +45,15 @@ namespace ssc
     std::vector<Septum> septa;
     /// Volume of the layer over the tessellated rectangle (mm^3).
     double region_volume = 0;
+    /// The Voronoi generators after Lloyd, in the layer's reference box
+    /// (x, y, s), s in [0, reference_height]: the lobule of a point is the
+    /// one of its nearest generator there (LobuleLocator).
+    std::vector<Point<3>> sites;
+    /// Index into lobules of the cell of each site, or
+    /// numbers::invalid_unsigned_int where the lobule was dropped (outside
+    /// the region of interest).
+    std::vector<unsigned int> site_lobule;
+    double                    reference_height = 0;
     /// CVT energy before and after every Lloyd iteration.
     std::vector<double> cvt_energy;
     VoronoiDiagnostics  diagnostics;

@@ -101,7 +101,15 @@ namespace ssc
     nlohmann::ordered_json
     statistics() const;
 
+    /// Area-weighted centroid of a septum.
+    static Point<3>
+    centroid(const Septum &septum);
+
   private:
+    /// Removes the septa and ligaments inside the fasciotomy.
+    void
+    cut_fasciotomy();
+
     void
     create_septa_mesh();
 
@@ -115,8 +123,11 @@ namespace ssc
     std::vector<LayerLobules> layer_lobules;
     std::vector<Septum>       all_septa;
     std::vector<Ligament>     all_ligaments;
-    Triangulation<2, 3>       septa_triangulation;
-    Triangulation<1, 3>       ligament_triangulation;
+    /// What the fasciotomy cut: septa, their area (mm^2), ligaments.
+    unsigned int        n_cut_septa = 0, n_cut_ligaments = 0;
+    double              cut_septa_area = 0;
+    Triangulation<2, 3> septa_triangulation;
+    Triangulation<1, 3> ligament_triangulation;
   };
 } // namespace ssc
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <cmath>
 #include <string>
 
 namespace ssc
@@ -55,6 +56,26 @@ namespace ssc
    * lobule tessellation of the SAT and DAT layers (their lobule diameters
    * are layer parameters), septa, skin ligaments and the region of interest.
    */
+  /**
+   * A fasciotomy (surgical release, subcision): every septum whose
+   * area-weighted centroid and every ligament whose axis lies within
+   * @p radius of the vertical axis through @p centre is cut, i.e. removed
+   * from the model.
+   */
+  struct Fasciotomy
+  {
+    bool     enabled = false;
+    Point<2> centre;
+    double   radius = 5;
+
+    /// Whether a point at lateral position (x, y) is inside the release.
+    bool
+    cuts(const double x, const double y) const
+    {
+      return enabled && std::hypot(x - centre[0], y - centre[1]) <= radius;
+    }
+  };
+
   struct MicrostructureParameters
   {
     bool                 lobules                 = false;
@@ -67,6 +88,7 @@ namespace ssc
     LigamentTarget       ligament_target         = LigamentTarget::SM;
     double               ligament_segment_length = 0.5;
     MicrostructureRegion region;
+    Fasciotomy           fasciotomy;
 
     static void
     declare_parameters(ParameterHandler &prm);
