@@ -4,6 +4,7 @@
 #include <ssc/application.h>
 #include <ssc/parameters.h>
 #include <ssc/scenes/geometry_scene.h>
+#include <ssc/scenes/growth_scene.h>
 #include <ssc/scenes/indentation_scene.h>
 
 #include <sstream>
@@ -113,6 +114,8 @@ namespace ssc
           }
         if (parameters.run.scene == "indentation")
           IndentationScene(parameters, mpi_communicator).run();
+        else if (parameters.run.scene == "growth")
+          GrowthScene(parameters, mpi_communicator).run();
         else if (parameters.run.scene == "geometry")
           GeometryScene(parameters, mpi_communicator).run();
         return 0;

@@ -139,6 +139,12 @@ namespace ssc
       "'Layer stack' with its kind, thickness and material. A kind may repeat "
       "(the abdomen has two membranous fasciae: skin, SAT, SM1, fat, SM2, "
       "DAT, deep).");
+    prm.declare_entry(
+      "Skin modulus factor",
+      "1",
+      Patterns::Double(0),
+      "Aging: multiplies the Young's modulus of every layer of kind skin "
+      "(1: as given; aged skin e.g. 0.5, half as stiff).");
     prm.leave_subsection();
   }
 
@@ -255,6 +261,10 @@ namespace ssc
 
     layers.clear();
     prm.enter_subsection("Layer stack");
+    skin_modulus_factor = prm.get_double("Skin modulus factor");
+    AssertThrow(skin_modulus_factor > 0,
+                ExcMessage("Layer stack/Skin modulus factor must be "
+                           "positive."));
     for (const auto &name : names)
       {
         prm.enter_subsection(name);
@@ -278,6 +288,8 @@ namespace ssc
                   prm.get_double("Grading"),
                   prm.get_double("Lobule diameter"),
                   prm.get_double("Lobule vertical stretch"));
+        if (layers.back().kind == LayerKind::skin)
+          layers.back().youngs_modulus *= skin_modulus_factor;
         if (prm.get("Material model") == "neo-Hookean")
           layers.back().model = MaterialModel::neo_hookean;
         else if (prm.get("Material model") == "corotational")

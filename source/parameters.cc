@@ -16,12 +16,14 @@ namespace ssc
     prm.enter_subsection("Run");
     prm.declare_entry("Scene",
                       "indentation",
-                      Patterns::Selection("indentation|geometry"),
+                      Patterns::Selection("indentation|growth|geometry"),
                       "What to simulate. indentation: a rigid flat "
                       "cylindrical punch at the patch centre, pressed to "
                       "prescribed depths or with prescribed forces (section "
                       "Punch), with the microstructure embedded when it is "
-                      "switched on. geometry: build the "
+                      "switched on. growth: fat lobules grow by a given "
+                      "volume (section Growth: cellulite, fat injection), "
+                      "the skin elevation is measured. geometry: build the "
                       "layered patch and its microstructure (lobules, septa, "
                       "ligaments) and write them, without mechanics.");
     prm.declare_entry("Name",
@@ -183,6 +185,7 @@ namespace ssc
     MeshParameters::declare_parameters(prm);
     ElasticityParameters::declare_parameters(prm);
     PunchParameters::declare_parameters(prm);
+    GrowthParameters::declare_parameters(prm);
     MicrostructureParameters::declare_parameters(prm);
     EmbeddedParameters::declare_parameters(prm);
     NewtonParameters::declare_parameters(prm);
@@ -227,6 +230,7 @@ namespace ssc
     mesh.parse_parameters(prm);
     elasticity.parse_parameters(prm);
     punch.parse_parameters(prm);
+    growth.parse_parameters(prm);
     microstructure.parse_parameters(prm);
     embedded.parse_parameters(prm);
     newton.parse_parameters(prm);
@@ -281,6 +285,17 @@ namespace ssc
         if (microstructure.ligaments)
           place_ligaments(layers, rectangle, microstructure);
       }
+    if (run.scene == "growth")
+      for (const std::string &name : growth.layers)
+        {
+          bool found = false;
+          for (unsigned int l = 0; l < layers.n_layers(); ++l)
+            found = found || layers.layer(l).name == name;
+          AssertThrow(found,
+                      ExcMessage("Growth/Layers names '" + name +
+                                 "', which is not a layer of the Layer "
+                                 "stack."));
+        }
     if (run.scene == "indentation")
       {
         const double smallest =

@@ -143,6 +143,26 @@ main(int argc, char **argv)
         std::string(valid_stack) +
           "subsection Layer stack\n  subsection fat\n"
           "    set Material model = Mooney-Rivlin\n  end\nend\n");
+  const std::string growth = std::string(valid_stack) +
+                             "subsection Run\n  set Scene = growth\n"
+                             "  set Output directory = results\nend\n";
+  check("growth of a layer that does not exist",
+        growth + "subsection Growth\n  set Layers = muscle\nend\n");
+  check("growth region that holds no material",
+        growth + "subsection Growth\n  set Layers = fat\n"
+                 "  set Region = ellipsoid\n  set Centre = 0, 0, 50\n"
+                 "  set Semi-axes = 1, 1, 1\nend\n");
+  check("growth ellipsoid with a zero semi-axis",
+        growth + "subsection Growth\n  set Layers = fat\n"
+                 "  set Region = ellipsoid\n  set Semi-axes = 1, 0, 1\n"
+                 "end\n");
+  check("growth centre with two coordinates",
+        growth + "subsection Growth\n  set Layers = fat\n"
+                 "  set Centre = 0, -2\nend\n");
+  check("fasciotomy with nothing to cut",
+        std::string(valid_stack) +
+          "subsection Microstructure\n  subsection Fasciotomy\n"
+          "    set Enabled = true\n  end\nend\n");
   check("missing include", "include no_such_region.prm\n");
   check("include inside a subsection",
         "subsection Mesh\n  include other.prm\nend\n");

@@ -171,8 +171,16 @@ namespace ssc
               const double       lobule_diameter = 0.,
               const double       lobule_stretch  = 1.);
 
+    /// Aging: the factor applied to the moduli of the skin layers.
+    double
+    get_skin_modulus_factor() const
+    {
+      return skin_modulus_factor;
+    }
+
   private:
     std::vector<Layer> layers;
+    double             skin_modulus_factor = 1.;
   };
 } // namespace ssc
 

@@ -9,6 +9,7 @@
 #include <ssc/mechanics/embedded_parameters.h>
 #include <ssc/mechanics/newton_parameters.h>
 #include <ssc/microstructure/microstructure_parameters.h>
+#include <ssc/scenes/growth_parameters.h>
 #include <ssc/scenes/punch_parameters.h>
 
 #include <string>
@@ -71,6 +72,7 @@ namespace ssc
     MeshParameters           mesh;
     ElasticityParameters     elasticity;
     PunchParameters          punch;
+    GrowthParameters         growth;
     MicrostructureParameters microstructure;
     EmbeddedParameters       embedded;
     NewtonParameters         newton;

@@ -13,6 +13,7 @@
 #include <ssc/output.h>
 #include <ssc/scenes/indentation_scene.h>
 #include <ssc/scenes/scene_run.h>
+#include <ssc/scenes/support_conditions.h>
 
 #include <cmath>
 #include <iomanip>
@@ -47,30 +48,6 @@ namespace ssc
 
   namespace
   {
-    /// The lateral and bottom conditions common to every scene.
-    std::vector<DirichletCondition>
-    support_conditions(const SideCondition sides)
-    {
-      auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
-      std::vector<DirichletCondition> conditions;
-      conditions.push_back(
-        {BoundaryId::bottom, ComponentMask(3, true), zero, {}});
-      if (sides == SideCondition::free)
-        return conditions;
-      const bool fixed = sides == SideCondition::fixed;
-      for (const types::boundary_id id : {BoundaryId::x_min,
-                                          BoundaryId::x_max,
-                                          BoundaryId::y_min,
-                                          BoundaryId::y_max})
-        {
-          ComponentMask mask(3, fixed);
-          mask.set(id <= BoundaryId::x_max ? 0 : 1, true);
-          conditions.push_back({id, mask, zero, {}});
-        }
-      return conditions;
-    }
-
-
     /// The points of the surface profile: y = 0, z = 0, centred in x.
     std::vector<Point<3>>
     profile_points(const PunchParameters &punch, const double patch_length)

@@ -47,6 +47,14 @@ namespace ssc
     nlohmann::ordered_json
     embedded_summary() const;
 
+    /// The lobules, septa and ligaments (null while the microstructure is
+    /// off).
+    const Microstructure *
+    get_microstructure() const
+    {
+      return microstructure.get();
+    }
+
     /// Whether anything is embedded.
     bool
     active() const

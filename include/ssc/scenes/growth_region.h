@@ -1,0 +1,54 @@
+#ifndef ssc_scenes_growth_region_h
+#define ssc_scenes_growth_region_h
+
+#include <deal.II/base/point.h>
+
+#include <ssc/layer_stack.h>
+#include <ssc/microstructure/lobule_locator.h>
+#include <ssc/microstructure/microstructure.h>
+#include <ssc/scenes/growth_parameters.h>
+
+#include <memory>
+#include <vector>
+
+namespace ssc
+{
+  /**
+   * Which material grows: that of the selected layers, lobule by lobule
+   * where the layer carries lobules (a lobule grows whole when its
+   * centroid lies in the region, so an injection fills whole fat
+   * compartments), point by point elsewhere.
+   */
+  class GrowthRegion
+  {
+  public:
+    /// @p microstructure may be null (no lobules); it must outlive this.
+    GrowthRegion(const LayerStack       &layers,
+                 const GrowthParameters &parameters,
+                 const Microstructure   *microstructure);
+
+    /// 1 where the material at reference point @p p of layer @p layer
+    /// grows, 0 elsewhere.
+    double
+    operator()(const Point<3> &p, const unsigned int layer) const;
+
+    /// Number of lobules that grow.
+    unsigned int
+    n_selected_lobules() const;
+
+  private:
+    /// The lobules of one selected layer and which of them grow.
+    struct LayerSelection
+    {
+      std::unique_ptr<LobuleLocator> locator;
+      std::vector<bool>              grows;
+    };
+
+    const LayerStack           &layers;
+    const GrowthParameters     &parameters;
+    std::vector<bool>           layer_selected;
+    std::vector<LayerSelection> selections; ///< per layer, may be empty
+  };
+} // namespace ssc
+
+#endif

@@ -1,0 +1,50 @@
+#ifndef ssc_scenes_growth_scene_h
+#define ssc_scenes_growth_scene_h
+
+#include <deal.II/base/mpi.h>
+
+#include <ssc/parameters.h>
+#include <ssc/scenes/surface_metrics.h>
+
+#include <vector>
+
+namespace ssc
+{
+  /// What the growth scene measured, per load step.
+  struct GrowthResult
+  {
+    double                      growth_ratio    = 0; ///< g
+    double                      selected_volume = 0; ///< mm^3
+    std::vector<double>         added_volumes;       ///< mm^3, stress-free
+    std::vector<double>         volume_changes;      ///< mm^3, of the body
+    std::vector<SurfaceMetrics> metrics;
+  };
+
+  /**
+   * Fat growth (cellulite, aging) and fat injection (section "Growth"): the
+   * selected fat takes an isotropic volumetric growth g, reached in equal
+   * steps, with g such that the stress-free added volume equals the target;
+   * the patch rests on its bottom, its sides held as Elasticity/Sides says,
+   * the skin free. The skin elevation u_z(x, y) is sampled on a grid and
+   * measured (SurfaceMetrics) after every step.
+   *
+   * Writes into output/<run name>/: summary.json, growth.csv (per step),
+   * elevation.csv (x, y, u_z, trend at the last step), volume.pvd, septa
+   * and ligament fields when the microstructure is on, parameters.prm,
+   * log.txt.
+   */
+  class GrowthScene
+  {
+  public:
+    GrowthScene(const Parameters &parameters, const MPI_Comm mpi_communicator);
+
+    GrowthResult
+    run();
+
+  private:
+    const Parameters &parameters;
+    MPI_Comm          mpi_communicator;
+  };
+} // namespace ssc
+
+#endif

@@ -1,0 +1,308 @@
+#include <deal.II/base/timer.h>
+
+#include <ssc/background_mesh.h>
+#include <ssc/embedding/point_locator.h>
+#include <ssc/mechanics/microstructure_coupling.h>
+#include <ssc/mechanics/newton_solver.h>
+#include <ssc/mechanics/volume_elasticity.h>
+#include <ssc/output.h>
+#include <ssc/scenes/growth_region.h>
+#include <ssc/scenes/growth_scene.h>
+#include <ssc/scenes/scene_run.h>
+#include <ssc/scenes/support_conditions.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace ssc
+{
+  GrowthScene::GrowthScene(const Parameters &parameters,
+                           const MPI_Comm    mpi_communicator)
+    : parameters(parameters)
+    , mpi_communicator(mpi_communicator)
+  {}
+
+
+  namespace
+  {
+    /// The grid of the skin surface (z = 0) on which the elevation is
+    /// measured: the patch, or the central square of the metrics.
+    GridField
+    surface_grid(const GrowthParameters &growth, const MeshParameters &mesh)
+    {
+      GridField    grid;
+      const double hx =
+        growth.metrics_half_width > 0 ?
+          std::min(growth.metrics_half_width, mesh.patch_length_x / 2) :
+          mesh.patch_length_x / 2;
+      const double hy =
+        growth.metrics_half_width > 0 ?
+          std::min(growth.metrics_half_width, mesh.patch_length_y / 2) :
+          mesh.patch_length_y / 2;
+      const unsigned int nx =
+        std::max(3., std::round(2 * hx / growth.grid_spacing) + 1);
+      const unsigned int ny =
+        std::max(3., std::round(2 * hy / growth.grid_spacing) + 1);
+      for (unsigned int i = 0; i < nx; ++i)
+        grid.x.push_back(-hx + 2 * hx * i / (nx - 1));
+      for (unsigned int j = 0; j < ny; ++j)
+        grid.y.push_back(-hy + 2 * hy * j / (ny - 1));
+      grid.values.assign(nx * ny, 0.);
+      return grid;
+    }
+
+
+    /// elevation.csv: x, y, u_z, trend, u_z - trend.
+    std::string
+    elevation_csv(const GridField &elevation, const SurfaceMetrics &metrics)
+    {
+      std::ostringstream csv;
+      csv << "x_mm,y_mm,uz_mm,trend_mm,residual_mm\n" << std::setprecision(8);
+      for (unsigned int j = 0; j < elevation.y.size(); ++j)
+        for (unsigned int i = 0; i < elevation.x.size(); ++i)
+          csv << elevation.x[i] << ',' << elevation.y[j] << ','
+              << elevation(i, j) << ',' << metrics.trend(i, j) << ','
+              << elevation(i, j) - metrics.trend(i, j) << '\n';
+      return csv.str();
+    }
+  } // namespace
+
+
+  GrowthResult
+  GrowthScene::run()
+  {
+    const RunParameters    &run    = parameters.run;
+    const GrowthParameters &growth = parameters.growth;
+    SceneRun                scene(parameters, mpi_communicator, "growth");
+    RunOutput              &output = scene.output();
+    ConditionalOStream     &pcout  = scene.pcout();
+    TimerOutput            &timer  = scene.timer();
+
+    BackgroundMesh mesh(parameters.layers, parameters.mesh, mpi_communicator);
+    {
+      TimerOutput::Scope t(timer, "mesh");
+      mesh.build();
+    }
+    pcout << "Mesh: " << mesh.triangulation().n_global_active_cells()
+          << " hexahedra over " << parameters.layers.n_layers() << " layers"
+          << std::endl;
+    VolumeElasticity elasticity(
+      mesh, parameters.layers, parameters.elasticity, timer, pcout);
+    {
+      TimerOutput::Scope t(timer, "setup");
+      elasticity.setup_dofs();
+    }
+    pcout << "Degrees of freedom: " << elasticity.n_dofs() << " (Q"
+          << parameters.elasticity.degree << ", "
+          << to_string(parameters.elasticity.formulation) << " formulation)"
+          << std::endl;
+    MicrostructureCoupling coupling(parameters, mesh, elasticity, timer, pcout);
+    coupling.setup();
+
+    GrowthResult result;
+    {
+      TimerOutput::Scope t(timer, "setup");
+      elasticity.setup_system(support_conditions(parameters.elasticity.sides),
+                              {});
+      const GrowthRegion region(parameters.layers,
+                                growth,
+                                coupling.get_microstructure());
+      elasticity.set_growth(
+        [&region](const Point<3> &p, const unsigned int layer) {
+          return region(p, layer);
+        });
+      result.selected_volume = elasticity.growth_volume();
+      AssertThrow(result.selected_volume > 0,
+                  ExcMessage("Growth: no material grows (no lobule of "
+                             "Growth/Layers has its centroid in the region, "
+                             "and no point of those layers lies in it)."));
+      result.growth_ratio = growth.added_volume / result.selected_volume;
+      pcout << "Growth: " << region.n_selected_lobules() << " lobules, "
+            << std::setprecision(6) << result.selected_volume
+            << " mm^3 of fat grow by g = " << result.growth_ratio
+            << " (added volume " << growth.added_volume << " mm^3)"
+            << std::endl;
+    }
+
+    const PointLocator locator(mesh.triangulation(), elasticity.get_mapping());
+    GridField          elevation = surface_grid(growth, parameters.mesh);
+    std::vector<Point<3>> surface_points;
+    for (const double y : elevation.y)
+      for (const double x : elevation.x)
+        surface_points.emplace_back(x, y, 0.);
+    const auto surface = locator.locate(surface_points);
+
+    std::vector<unsigned int>        linear_iterations, newton_iterations, cuts;
+    std::vector<double>              times;
+    std::vector<std::vector<double>> residual_histories;
+    const bool                       nonlinear = parameters.layers.nonlinear();
+    NewtonSolver newton(elasticity, parameters.newton, pcout, !run.test_mode);
+    const auto   apply_growth = [&](const double fraction)
+      -> std::vector<std::pair<types::global_dof_index, double>> {
+      elasticity.set_growth_scale(fraction * result.growth_ratio);
+      return {};
+    };
+    double position = 0, increment = 1. / parameters.newton.initial_steps;
+    double previous_fraction = 1;
+    if (nonlinear)
+      {
+        apply_growth(0.);
+        elasticity.apply_constraints_to_solution();
+      }
+    else
+      {
+        // linear: one solve for the whole growth, the steps by scaling
+        Timer solve_timer(mpi_communicator, true);
+        apply_growth(1.);
+        elasticity.assemble();
+        const LinearSolveReport report = elasticity.solve();
+        linear_iterations.push_back(report.iterations);
+        times.push_back(solve_timer.wall_time());
+        pcout << "Linear elasticity: one solve for the whole growth";
+        if (!run.test_mode)
+          pcout << ", " << report.iterations << " CG iterations";
+        pcout << std::endl;
+      }
+
+    for (unsigned int step = 1; step <= growth.load_steps; ++step)
+      {
+        const double fraction = double(step) / growth.load_steps;
+        if (nonlinear)
+          {
+            Timer                step_timer(mpi_communicator, true);
+            const LoadPathReport report =
+              newton.follow(position, fraction, increment, apply_growth);
+            position = fraction;
+            linear_iterations.push_back(report.linear_iterations);
+            newton_iterations.push_back(report.newton_iterations);
+            cuts.push_back(report.cuts);
+            residual_histories.push_back(report.last_residuals);
+            times.push_back(step_timer.wall_time());
+          }
+        else
+          {
+            elasticity.scale_solution(fraction / previous_fraction);
+            previous_fraction = fraction;
+            if (step > 1)
+              {
+                linear_iterations.push_back(0);
+                times.push_back(0);
+              }
+            newton_iterations.push_back(0);
+            cuts.push_back(0);
+          }
+        std::vector<Tensor<1, 3>> u;
+        std::vector<Tensor<2, 3>> gradient;
+        elasticity.evaluate_at(surface, u, gradient);
+        for (unsigned int k = 0; k < u.size(); ++k)
+          elevation.values[k] = u[k][2];
+        result.metrics.push_back(SurfaceMetrics::compute(elevation,
+                                                         growth.trend_width,
+                                                         growth.dimple_depth));
+        result.added_volumes.push_back(fraction * growth.added_volume);
+        result.volume_changes.push_back(elasticity.volume_change());
+        const SurfaceMetrics &m = result.metrics.back();
+        pcout << "Growth step " << step << " of " << growth.load_steps
+              << ": added " << std::setprecision(6)
+              << result.added_volumes.back() << " mm^3 (the body's volume "
+              << result.volume_changes.back() << " mm^3), elevation max "
+              << m.max_elevation << " mean " << m.mean_elevation
+              << " mm, roughness " << m.roughness << " mm, dimples "
+              << m.dimples.size();
+        if (nonlinear && !run.test_mode)
+          pcout << " (" << newton_iterations.back() << " Newton, "
+                << linear_iterations.back() << " CG iterations, " << cuts.back()
+                << " cuts)";
+        pcout << std::endl;
+        if (run.write_fields)
+          {
+            TimerOutput::Scope t(timer, "output");
+            const std::string  file =
+              elasticity.write_vtu(output.directory(), "volume", step);
+            output.add_pvd_record("volume", fraction, file);
+            coupling.write(output, step, fraction);
+          }
+      }
+
+    {
+      TimerOutput::Scope t(timer, "output");
+      output.write_text("elevation.csv",
+                        elevation_csv(elevation, result.metrics.back()));
+      std::ostringstream csv;
+      csv << "step,added_volume_mm3,volume_change_mm3,max_elevation_mm,"
+             "mean_elevation_mm,"
+             "roughness_mm,dimples,max_dimple_depth_mm,uplift_volume_mm3,"
+             "newton_iterations,linear_iterations,load_cuts,wall_time_s\n"
+          << std::setprecision(10);
+      for (unsigned int k = 0; k < result.metrics.size(); ++k)
+        {
+          const auto json = result.metrics[k].to_json();
+          csv << k + 1 << ',' << result.added_volumes[k] << ','
+              << result.volume_changes[k] << ','
+              << result.metrics[k].max_elevation << ','
+              << result.metrics[k].mean_elevation << ','
+              << result.metrics[k].roughness << ','
+              << result.metrics[k].dimples.size() << ','
+              << json["dimples"]["max_depth_mm"].get<double>() << ','
+              << result.metrics[k].uplift_volume << ',' << newton_iterations[k]
+              << ',' << linear_iterations[k] << ',' << cuts[k] << ','
+              << times[k] << '\n';
+        }
+      output.write_text("growth.csv", csv.str());
+    }
+
+    nlohmann::ordered_json summary =
+      scene.summary(elasticity.n_dofs(),
+                    mesh.triangulation().n_global_active_cells());
+    summary["embedded"] = coupling.embedded_summary();
+    if (const Microstructure *m = coupling.get_microstructure())
+      summary["fasciotomy"] = m->statistics()["fasciotomy"];
+    unsigned int total_linear = 0, total_newton = 0;
+    for (unsigned int k = 0; k < linear_iterations.size(); ++k)
+      total_linear += linear_iterations[k];
+    for (const unsigned int n : newton_iterations)
+      total_newton += n;
+    summary["solver"] = {{"linear_iterations", total_linear},
+                         {"linear_iterations_per_step", linear_iterations},
+                         {"newton_iterations", total_newton},
+                         {"newton_iterations_per_step", newton_iterations},
+                         {"load_cuts_per_step", cuts},
+                         {"wall_time_per_step", times}};
+    if (nonlinear)
+      summary["solver"]["final_residuals_per_step"] = residual_histories;
+    const SurfaceMetrics &last   = result.metrics.back();
+    summary["added_volume_mm3"]  = growth.added_volume;
+    summary["max_elevation_mm"]  = last.max_elevation;
+    summary["mean_elevation_mm"] = last.mean_elevation;
+    summary["roughness_mm"]      = last.roughness;
+    summary["dimples"]           = last.to_json()["dimples"];
+    summary["uplift_volume_mm3"] = last.uplift_volume;
+    summary["volume_change_mm3"] = result.volume_changes.back();
+    summary["growth"]            = {
+                 {"layers", growth.layers},
+                 {"region",
+       growth.shape == GrowthRegionShape::patch ? "patch" : "ellipsoid"},
+                 {"grown_volume_mm3", result.selected_volume},
+                 {"growth_ratio", result.growth_ratio},
+                 {"stress_free_added_volume_mm3",
+                  result.growth_ratio * result.selected_volume},
+                 {"skin_modulus_factor", parameters.layers.get_skin_modulus_factor()},
+                 {"trend_filter_width_mm", growth.trend_width},
+                 {"metrics_grid",
+                  {{"nx", elevation.x.size()},
+                   {"ny", elevation.y.size()},
+                   {"spacing_mm", elevation.x[1] - elevation.x[0]}}}};
+    nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+    for (unsigned int k = 0; k < result.metrics.size(); ++k)
+      {
+        auto entry                 = result.metrics[k].to_json();
+        entry["added_volume_mm3"]  = result.added_volumes[k];
+        entry["volume_change_mm3"] = result.volume_changes[k];
+        steps.push_back(entry);
+      }
+    summary["steps"] = steps;
+    output.write_summary(summary);
+    scene.print_wall_times();
+    return result;
+  }
+} // namespace ssc
