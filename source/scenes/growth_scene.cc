@@ -8,6 +8,7 @@
 #include <ssc/output.h>
 #include <ssc/scenes/growth_region.h>
 #include <ssc/scenes/growth_scene.h>
+#include <ssc/scenes/mechanics_model.h>
 #include <ssc/scenes/scene_run.h>
 #include <ssc/scenes/support_conditions.h>
 
@@ -78,26 +79,10 @@ namespace ssc
     ConditionalOStream     &pcout  = scene.pcout();
     TimerOutput            &timer  = scene.timer();
 
-    BackgroundMesh mesh(parameters.layers, parameters.mesh, mpi_communicator);
-    {
-      TimerOutput::Scope t(timer, "mesh");
-      mesh.build();
-    }
-    pcout << "Mesh: " << mesh.triangulation().n_global_active_cells()
-          << " hexahedra over " << parameters.layers.n_layers() << " layers"
-          << std::endl;
-    VolumeElasticity elasticity(
-      mesh, parameters.layers, parameters.elasticity, timer, pcout);
-    {
-      TimerOutput::Scope t(timer, "setup");
-      elasticity.setup_dofs();
-    }
-    pcout << "Degrees of freedom: " << elasticity.n_dofs() << " (Q"
-          << parameters.elasticity.degree << ", "
-          << to_string(parameters.elasticity.formulation) << " formulation)"
-          << std::endl;
-    MicrostructureCoupling coupling(parameters, mesh, elasticity, timer, pcout);
-    coupling.setup();
+    MechanicsModel          model(parameters, mpi_communicator, timer, pcout);
+    BackgroundMesh         &mesh       = model.mesh();
+    VolumeElasticity       &elasticity = model.elasticity();
+    MicrostructureCoupling &coupling   = model.coupling();
 
     GrowthResult result;
     {

@@ -12,6 +12,7 @@
 #include <ssc/mechanics/volume_elasticity.h>
 #include <ssc/output.h>
 #include <ssc/scenes/indentation_scene.h>
+#include <ssc/scenes/mechanics_model.h>
 #include <ssc/scenes/scene_run.h>
 #include <ssc/scenes/support_conditions.h>
 
@@ -194,28 +195,10 @@ namespace ssc
     ConditionalOStream  &pcout  = scene.pcout();
     TimerOutput         &timer  = scene.timer();
 
-    BackgroundMesh mesh(parameters.layers, parameters.mesh, mpi_communicator);
-    {
-      TimerOutput::Scope t(timer, "mesh");
-      mesh.build();
-    }
-    pcout << "Mesh: " << mesh.triangulation().n_global_active_cells()
-          << " hexahedra over " << parameters.layers.n_layers() << " layers"
-          << std::endl;
-
-    VolumeElasticity elasticity(
-      mesh, parameters.layers, parameters.elasticity, timer, pcout);
-    {
-      TimerOutput::Scope t(timer, "setup");
-      elasticity.setup_dofs();
-    }
-    pcout << "Degrees of freedom: " << elasticity.n_dofs() << " (Q"
-          << parameters.elasticity.degree << ", "
-          << to_string(parameters.elasticity.formulation) << " formulation)"
-          << std::endl;
-
-    MicrostructureCoupling coupling(parameters, mesh, elasticity, timer, pcout);
-    coupling.setup();
+    MechanicsModel          model(parameters, mpi_communicator, timer, pcout);
+    BackgroundMesh         &mesh       = model.mesh();
+    VolumeElasticity       &elasticity = model.elasticity();
+    MicrostructureCoupling &coupling   = model.coupling();
 
     // The punch: u_x = u_y = 0 under it if bonded; u_z = -depth
     // (displacement control) or u_z tied to a master (force control).

@@ -1,0 +1,57 @@
+#ifndef ssc_scenes_mechanics_model_h
+#define ssc_scenes_mechanics_model_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <ssc/background_mesh.h>
+#include <ssc/mechanics/microstructure_coupling.h>
+#include <ssc/mechanics/volume_elasticity.h>
+#include <ssc/parameters.h>
+
+#include <memory>
+
+namespace ssc
+{
+  /**
+   * What every mechanics scene builds before it loads the patch: the
+   * background mesh, the volume elasticity on it (dofs distributed, no
+   * boundary conditions yet) and the microstructure embedded in it, each
+   * timed as its phase of DESIGN.md §3 and reported in one progress line.
+   */
+  class MechanicsModel
+  {
+  public:
+    MechanicsModel(const Parameters   &parameters,
+                   const MPI_Comm      mpi_communicator,
+                   TimerOutput        &timer,
+                   ConditionalOStream &pcout);
+
+    BackgroundMesh &
+    mesh()
+    {
+      return *background_mesh;
+    }
+
+    VolumeElasticity &
+    elasticity()
+    {
+      return *volume_elasticity;
+    }
+
+    MicrostructureCoupling &
+    coupling()
+    {
+      return *microstructure_coupling;
+    }
+
+  private:
+    // built in this order, each on the one before
+    std::unique_ptr<BackgroundMesh>         background_mesh;
+    std::unique_ptr<VolumeElasticity>       volume_elasticity;
+    std::unique_ptr<MicrostructureCoupling> microstructure_coupling;
+  };
+} // namespace ssc
+
+#endif
