@@ -6,6 +6,10 @@
 //   c + A, the uplift volume is c times the area, and the dimples are the
 //   relief's minima (-A where one cosine is 1 and the other -1) inside the
 //   grid, counted exactly;
+// - the same relief on a tilted plane, measured in a central window: the
+//   plane belongs to the trend (the roughness stays A/2, the mean c), and
+//   the dimples are the minima in the window, edges included (84 of the
+//   169 integer points of [-6, 6]^2 have x + y odd);
 // - a Gaussian dome of standard deviation 8 mm (the smooth swelling of a
 //   deep injection), wider than the filter, has no dimples; its residual
 //   at the centre is the closed form sigma^2 / (W^2 + sigma^2). (A dome as
@@ -69,6 +73,18 @@ main(int argc, char **argv)
   deallog << "relief: " << relief.dimples.size() << " dimples (expected "
           << minima << "), depths " << shallowest << " to " << deepest << " (A "
           << A << ")" << std::endl;
+
+  // the same relief on a tilted surface, measured in the central window
+  // |x|, |y| <= 6 mm: the plane is part of the trend, the relief is not
+  ssc::GridField tilted = grid;
+  for (unsigned int j = 0; j < n; ++j)
+    for (unsigned int i = 0; i < n; ++i)
+      tilted.values[j * n + i] += 0.1 * grid.x[i] - 0.05 * grid.y[j];
+  const ssc::SurfaceMetrics tilt =
+    ssc::SurfaceMetrics::compute(tilted, 3., 0.01, 6.);
+  deallog << "tilted relief in the window: roughness / (A/2) "
+          << tilt.roughness / (A / 2) << ", mean " << tilt.mean_elevation
+          << ", dimples " << tilt.dimples.size() << std::endl;
 
   for (unsigned int j = 0; j < n; ++j)
     for (unsigned int i = 0; i < n; ++i)

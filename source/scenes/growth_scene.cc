@@ -27,19 +27,14 @@ namespace ssc
   namespace
   {
     /// The grid of the skin surface (z = 0) on which the elevation is
-    /// measured: the patch, or the central square of the metrics.
+    /// sampled: the whole patch (the trend needs more than the metrics'
+    /// window).
     GridField
     surface_grid(const GrowthParameters &growth, const MeshParameters &mesh)
     {
-      GridField    grid;
-      const double hx =
-        growth.metrics_half_width > 0 ?
-          std::min(growth.metrics_half_width, mesh.patch_length_x / 2) :
-          mesh.patch_length_x / 2;
-      const double hy =
-        growth.metrics_half_width > 0 ?
-          std::min(growth.metrics_half_width, mesh.patch_length_y / 2) :
-          mesh.patch_length_y / 2;
+      GridField          grid;
+      const double       hx = mesh.patch_length_x / 2;
+      const double       hy = mesh.patch_length_y / 2;
       const unsigned int nx =
         std::max(3., std::round(2 * hx / growth.grid_spacing) + 1);
       const unsigned int ny =
@@ -53,14 +48,14 @@ namespace ssc
     }
 
 
-    /// elevation.csv: x, y, u_z, trend, u_z - trend.
+    /// elevation.csv: x, y, u_z, trend, u_z - trend in the metrics' window.
     std::string
     elevation_csv(const GridField &elevation, const SurfaceMetrics &metrics)
     {
       std::ostringstream csv;
       csv << "x_mm,y_mm,uz_mm,trend_mm,residual_mm\n" << std::setprecision(8);
-      for (unsigned int j = 0; j < elevation.y.size(); ++j)
-        for (unsigned int i = 0; i < elevation.x.size(); ++i)
+      for (unsigned int j = metrics.first_y; j <= metrics.last_y; ++j)
+        for (unsigned int i = metrics.first_x; i <= metrics.last_x; ++i)
           csv << elevation.x[i] << ',' << elevation.y[j] << ','
               << elevation(i, j) << ',' << metrics.trend(i, j) << ','
               << elevation(i, j) - metrics.trend(i, j) << '\n';
@@ -181,9 +176,11 @@ namespace ssc
         elasticity.evaluate_at(surface, u, gradient);
         for (unsigned int k = 0; k < u.size(); ++k)
           elevation.values[k] = u[k][2];
-        result.metrics.push_back(SurfaceMetrics::compute(elevation,
-                                                         growth.trend_width,
-                                                         growth.dimple_depth));
+        result.metrics.push_back(
+          SurfaceMetrics::compute(elevation,
+                                  growth.trend_width,
+                                  growth.dimple_depth,
+                                  growth.metrics_half_width));
         result.added_volumes.push_back(fraction * growth.added_volume);
         result.volume_changes.push_back(elasticity.volume_change());
         const SurfaceMetrics &m = result.metrics.back();
@@ -274,9 +271,10 @@ namespace ssc
                  {"skin_modulus_factor", parameters.layers.get_skin_modulus_factor()},
                  {"trend_filter_width_mm", growth.trend_width},
                  {"metrics_grid",
-                  {{"nx", elevation.x.size()},
-                   {"ny", elevation.y.size()},
-                   {"spacing_mm", elevation.x[1] - elevation.x[0]}}}};
+                  {{"nx", last.last_x - last.first_x + 1},
+                   {"ny", last.last_y - last.first_y + 1},
+                   {"spacing_mm", elevation.x[1] - elevation.x[0]},
+                   {"half_width_mm", growth.metrics_half_width}}}};
     nlohmann::ordered_json steps = nlohmann::ordered_json::array();
     for (unsigned int k = 0; k < result.metrics.size(); ++k)
       {

@@ -1,9 +1,13 @@
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
 #include <ssc/scenes/surface_metrics.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ssc
 {
@@ -56,7 +60,8 @@ namespace ssc
   SurfaceMetrics
   SurfaceMetrics::compute(const GridField &elevation,
                           const double     sigma,
-                          const double     dimple_depth)
+                          const double     dimple_depth,
+                          const double     half_width)
   {
     const unsigned int nx = elevation.x.size(), ny = elevation.y.size();
     AssertThrow(nx >= 3 && ny >= 3 && elevation.values.size() == nx * ny,
@@ -65,8 +70,33 @@ namespace ssc
     const double hx = elevation.x[1] - elevation.x[0];
     const double hy = elevation.y[1] - elevation.y[0];
 
+    // The trend: the least-squares plane plus the Gaussian filter of what
+    // departs from it, so that a tilt of the whole surface (a layer
+    // thickening across the patch) does not leave a residual at the edges.
+    dealii::FullMatrix<double> normal(3, 3);
+    dealii::Vector<double>     moments(3), plane(3);
+    for (unsigned int j = 0; j < ny; ++j)
+      for (unsigned int i = 0; i < nx; ++i)
+        {
+          const double basis[3] = {1., elevation.x[i], elevation.y[j]};
+          for (unsigned int a = 0; a < 3; ++a)
+            {
+              moments(a) += basis[a] * elevation(i, j);
+              for (unsigned int b = 0; b < 3; ++b)
+                normal(a, b) += basis[a] * basis[b];
+            }
+        }
+    normal.gauss_jordan();
+    normal.vmult(plane, moments);
+    const auto plane_at = [&](const unsigned int i, const unsigned int j) {
+      return plane(0) + plane(1) * elevation.x[i] + plane(2) * elevation.y[j];
+    };
+
     SurfaceMetrics metrics;
     metrics.trend = elevation;
+    for (unsigned int j = 0; j < ny; ++j)
+      for (unsigned int i = 0; i < nx; ++i)
+        metrics.trend.values[j * nx + i] -= plane_at(i, j);
     std::vector<double> weight(nx * ny, 1.);
     const auto          kernel_x = gaussian_kernel(sigma, hx);
     const auto          kernel_y = gaussian_kernel(sigma, hy);
@@ -75,34 +105,67 @@ namespace ssc
         smooth_lines(*field, nx, 1, ny, nx, kernel_x);
         smooth_lines(*field, ny, nx, nx, 1, kernel_y);
       }
-    for (unsigned int k = 0; k < nx * ny; ++k)
-      metrics.trend.values[k] /= weight[k];
-
-    metrics.max_elevation =
-      *std::max_element(elevation.values.begin(), elevation.values.end());
-    double sum = 0, square = 0, volume = 0;
     for (unsigned int j = 0; j < ny; ++j)
       for (unsigned int i = 0; i < nx; ++i)
+        metrics.trend.values[j * nx + i] =
+          metrics.trend.values[j * nx + i] / weight[j * nx + i] +
+          plane_at(i, j);
+
+    // the window of the metrics
+    const auto inside = [half_width](const double t) {
+      return half_width <= 0 || std::abs(t) <= half_width * (1 + 1e-12);
+    };
+    metrics.first_x = metrics.first_y = std::numeric_limits<unsigned>::max();
+    metrics.last_x = metrics.last_y = 0;
+    for (unsigned int i = 0; i < nx; ++i)
+      if (inside(elevation.x[i]))
         {
-          const double u = elevation(i, j);
-          const double r = u - metrics.trend(i, j);
+          metrics.first_x = std::min(metrics.first_x, i);
+          metrics.last_x  = i;
+        }
+    for (unsigned int j = 0; j < ny; ++j)
+      if (inside(elevation.y[j]))
+        {
+          metrics.first_y = std::min(metrics.first_y, j);
+          metrics.last_y  = j;
+        }
+    AssertThrow(metrics.last_x > metrics.first_x &&
+                  metrics.last_y > metrics.first_y &&
+                  metrics.first_x != std::numeric_limits<unsigned>::max(),
+                dealii::ExcMessage("The metrics window holds fewer than 2 x 2 "
+                                   "grid points."));
+
+    metrics.max_elevation = -std::numeric_limits<double>::max();
+    double       sum = 0, square = 0, volume = 0;
+    unsigned int count = 0;
+    for (unsigned int j = metrics.first_y; j <= metrics.last_y; ++j)
+      for (unsigned int i = metrics.first_x; i <= metrics.last_x; ++i)
+        {
+          const double u        = elevation(i, j);
+          const double r        = u - metrics.trend(i, j);
+          metrics.max_elevation = std::max(metrics.max_elevation, u);
           sum += u;
           square += r * r;
-          // trapezoidal weights
-          volume += u * hx * hy * ((i == 0 || i + 1 == nx) ? 0.5 : 1.) *
-                    ((j == 0 || j + 1 == ny) ? 0.5 : 1.);
+          ++count;
+          // trapezoidal weights on the window
+          volume += u * hx * hy *
+                    ((i == metrics.first_x || i == metrics.last_x) ? 0.5 : 1.) *
+                    ((j == metrics.first_y || j == metrics.last_y) ? 0.5 : 1.);
         }
-    metrics.mean_elevation = sum / (nx * ny);
-    metrics.roughness      = std::sqrt(square / (nx * ny));
+    metrics.mean_elevation = sum / count;
+    metrics.roughness      = std::sqrt(square / count);
     metrics.uplift_volume  = volume;
 
-    for (unsigned int j = 1; j + 1 < ny; ++j)
-      for (unsigned int i = 1; i + 1 < nx; ++i)
+    const auto residual = [&](const unsigned int a, const unsigned int b) {
+      return elevation(a, b) - metrics.trend(a, b);
+    };
+    for (unsigned int j = std::max(metrics.first_y, 1u);
+         j <= std::min(metrics.last_y, ny - 2);
+         ++j)
+      for (unsigned int i = std::max(metrics.first_x, 1u);
+           i <= std::min(metrics.last_x, nx - 2);
+           ++i)
         {
-          const auto residual = [&](const unsigned int a,
-                                    const unsigned int b) {
-            return elevation(a, b) - metrics.trend(a, b);
-          };
           const double depth = -residual(i, j);
           if (depth < dimple_depth)
             continue;

@@ -30,9 +30,12 @@ namespace ssc
   /**
    * What the skin surface looks like after growth: the elevation u_z(x, y)
    * of the skin (z = 0 at rest), its smooth trend, and what departs from
-   * the trend. The trend is the elevation filtered with a Gaussian of
-   * standard deviation sigma, normalised by the filtered indicator of the
-   * grid so that the edges are not pulled towards zero; the roughness is
+   * the trend. The trend is the least-squares plane of the elevation plus
+   * the Gaussian filter (standard deviation sigma) of what departs from the
+   * plane, normalised by the filtered indicator of the grid so that the
+   * edges are not pulled towards zero: a tilted plane is its own trend. The
+   * trend uses the whole grid, the metrics only the central window
+   * |x|, |y| <= half width (away from the grid's edges); the roughness is
    * the root mean square of elevation minus trend; a dimple is a local
    * minimum of elevation minus trend (lower than at the eight neighbouring
    * grid points) at least the dimple depth below the trend.
@@ -45,12 +48,16 @@ namespace ssc
     double              uplift_volume  = 0; ///< integral of u_z, mm^3
     std::vector<Dimple> dimples;
     GridField           trend;
+    /// The grid indices of the window, both ends included.
+    unsigned int first_x = 0, last_x = 0, first_y = 0, last_y = 0;
 
-    /// Evaluates @p elevation (spacing uniform in x and in y).
+    /// Evaluates @p elevation (spacing uniform in x and in y) in the window
+    /// of @p half_width (0: the whole grid).
     static SurfaceMetrics
     compute(const GridField &elevation,
             const double     sigma,
-            const double     dimple_depth);
+            const double     dimple_depth,
+            const double     half_width = 0);
 
     /// The summary.json entries of DESIGN.md §3 (max_elevation_mm,
     /// mean_elevation_mm, roughness_mm, dimples: count, mean and largest
