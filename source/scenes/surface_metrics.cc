@@ -156,8 +156,13 @@ namespace ssc
     metrics.roughness      = std::sqrt(square / count);
     metrics.uplift_volume  = volume;
 
-    const auto residual = [&](const unsigned int a, const unsigned int b) {
-      return elevation(a, b) - metrics.trend(a, b);
+    // A dimple is a depression of the skin itself: a local minimum of the
+    // elevation (less the plane, so that a tilt does not hide it) that lies
+    // at least dimple_depth below the trend. (Minima of elevation minus
+    // trend would also count the noise along the trough that the filter
+    // leaves around any dome narrower than a few sigma.)
+    const auto untilted = [&](const unsigned int a, const unsigned int b) {
+      return elevation(a, b) - plane_at(a, b);
     };
     for (unsigned int j = std::max(metrics.first_y, 1u);
          j <= std::min(metrics.last_y, ny - 2);
@@ -166,13 +171,14 @@ namespace ssc
            i <= std::min(metrics.last_x, nx - 2);
            ++i)
         {
-          const double depth = -residual(i, j);
+          const double depth = metrics.trend(i, j) - elevation(i, j);
           if (depth < dimple_depth)
             continue;
           bool lowest = true;
           for (int dj = -1; dj <= 1 && lowest; ++dj)
             for (int di = -1; di <= 1 && lowest; ++di)
-              if ((di != 0 || dj != 0) && -residual(i + di, j + dj) >= depth)
+              if ((di != 0 || dj != 0) &&
+                  untilted(i + di, j + dj) <= untilted(i, j))
                 lowest = false;
           if (lowest)
             metrics.dimples.push_back({elevation.x[i], elevation.y[j], depth});

@@ -37,8 +37,8 @@ namespace ssc
    * trend uses the whole grid, the metrics only the central window
    * |x|, |y| <= half width (away from the grid's edges); the roughness is
    * the root mean square of elevation minus trend; a dimple is a local
-   * minimum of elevation minus trend (lower than at the eight neighbouring
-   * grid points) at least the dimple depth below the trend.
+   * minimum of the elevation less the plane (lower than at the eight
+   * neighbouring grid points) at least the dimple depth below the trend.
    */
   struct SurfaceMetrics
   {
