@@ -100,8 +100,8 @@ namespace ssc
           {
             // Pseudo-transient continuation: the whole step of the shifted
             // tangent, unless it inverts cells; the shift follows the
-            // residual (switched evolution relaxation) and is dropped once
-            // it is small, which gives back Newton's convergence.
+            // residual (switched evolution relaxation), and Newton's method
+            // takes over again once the residual has dropped tenfold.
             ++continuation_iterations;
             elasticity.set_solution_from_stored(1.);
             trial = elasticity.assemble_newton_system(false, nodal_forces);

@@ -40,6 +40,10 @@ namespace ssc
    * the residual has dropped by the relative tolerance from its value at
    * the start of the solve, or below the absolute tolerance. Inverted cells
    * count as an infinite residual, so the line search backs off from them.
+   * Where the line search finds no decrease (past a stability limit the
+   * tangent is indefinite and Newton's direction need not lower the
+   * residual), the solve continues with the tangent shifted by a multiple
+   * of its diagonal (pseudo-transient continuation) before it gives up.
    */
   class NewtonSolver
   {
