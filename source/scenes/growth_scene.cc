@@ -239,19 +239,8 @@ namespace ssc
     summary["embedded"] = coupling.embedded_summary();
     if (const Microstructure *m = coupling.get_microstructure())
       summary["fasciotomy"] = m->statistics()["fasciotomy"];
-    unsigned int total_linear = 0, total_newton = 0;
-    for (unsigned int k = 0; k < linear_iterations.size(); ++k)
-      total_linear += linear_iterations[k];
-    for (const unsigned int n : newton_iterations)
-      total_newton += n;
-    summary["solver"] = {{"linear_iterations", total_linear},
-                         {"linear_iterations_per_step", linear_iterations},
-                         {"newton_iterations", total_newton},
-                         {"newton_iterations_per_step", newton_iterations},
-                         {"load_cuts_per_step", cuts},
-                         {"wall_time_per_step", times}};
-    if (nonlinear)
-      summary["solver"]["final_residuals_per_step"] = residual_histories;
+    summary["solver"] = solver_summary(
+      linear_iterations, newton_iterations, cuts, times, residual_histories);
     const SurfaceMetrics &last   = result.metrics.back();
     summary["added_volume_mm3"]  = growth.added_volume;
     summary["max_elevation_mm"]  = last.max_elevation;

@@ -454,22 +454,9 @@ namespace ssc
                                  {"formulation",
                                   to_string(parameters.elasticity.formulation)},
                                  {"material_model", models}};
-    unsigned int total_linear = 0, total_newton = 0, total_cuts = 0;
-    for (unsigned int k = 0; k < loads.size(); ++k)
-      {
-        total_linear += linear_iterations[k];
-        total_newton += newton_iterations[k];
-        total_cuts += cuts[k];
-      }
-    summary["solver"] = {{"linear_iterations", total_linear},
-                         {"linear_iterations_per_step", linear_iterations},
-                         {"newton_iterations", total_newton},
-                         {"newton_iterations_per_step", newton_iterations},
-                         {"load_cuts_per_step", cuts},
-                         {"wall_time_per_step", times}};
-    if (nonlinear)
-      summary["solver"]["final_residuals_per_step"] = residual_histories;
-    else
+    summary["solver"]         = solver_summary(
+      linear_iterations, newton_iterations, cuts, times, residual_histories);
+    if (!nonlinear)
       summary["solver"]["note"] =
         "linear elasticity: one solve for a unit load, the load steps by "
         "scaling";
