@@ -300,6 +300,20 @@ namespace ssc
   }
 
 
+  unsigned int
+  LayerStack::index_of(const std::string &name,
+                       const std::string &parameter) const
+  {
+    for (unsigned int l = 0; l < layers.size(); ++l)
+      if (layers[l].name == name)
+        return l;
+    AssertThrow(false,
+                ExcMessage(parameter + " names '" + name +
+                           "', which is not a layer of the Layer stack."));
+    return numbers::invalid_unsigned_int;
+  }
+
+
   void
   LayerStack::add_layer(const std::string &name,
                         const LayerKind    kind,

@@ -287,15 +287,7 @@ namespace ssc
       }
     if (run.scene == "growth")
       for (const std::string &name : growth.layers)
-        {
-          bool found = false;
-          for (unsigned int l = 0; l < layers.n_layers(); ++l)
-            found = found || layers.layer(l).name == name;
-          AssertThrow(found,
-                      ExcMessage("Growth/Layers names '" + name +
-                                 "', which is not a layer of the Layer "
-                                 "stack."));
-        }
+        layers.index_of(name, "Growth/Layers"); // throws if unknown
     if (run.scene == "indentation")
       {
         const double smallest =

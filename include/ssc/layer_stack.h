@@ -148,6 +148,11 @@ namespace ssc
     unsigned int
     layer_at(const Point<3> &p) const;
 
+    /// Index of the layer called @p name; throws, naming @p parameter (the
+    /// entry that gave the name), if there is none.
+    unsigned int
+    index_of(const std::string &name, const std::string &parameter) const;
+
     /// Sets the material model of layer @p i (tests, benchmarks).
     void
     set_model(const unsigned int i, const MaterialModel model)

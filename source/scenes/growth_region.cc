@@ -15,18 +15,7 @@ namespace ssc
     , selections(layers.n_layers())
   {
     for (const std::string &name : parameters.layers)
-      {
-        bool found = false;
-        for (unsigned int l = 0; l < layers.n_layers(); ++l)
-          if (layers.layer(l).name == name)
-            {
-              layer_selected[l] = true;
-              found             = true;
-            }
-        AssertThrow(found,
-                    ExcMessage("Growth/Layers names '" + name +
-                               "', which is not a layer of the Layer stack."));
-      }
+      layer_selected[layers.index_of(name, "Growth/Layers")] = true;
     if (microstructure == nullptr)
       return;
     for (const LayerLobules &lobules : microstructure->lobule_layers())
