@@ -88,7 +88,7 @@ main(int argc, char **argv)
           << intact.ligaments().size()
           << " ligaments; inside the release: " << septa_inside << " septa, "
           << ligaments_inside << " ligaments" << std::endl;
-  const auto statistics = released.statistics()["fasciotomy"];
+  const auto statistics = released.fasciotomy_summary();
   deallog << "released: " << released.septa().size() << " septa, "
           << released.ligaments().size() << " ligaments; reported cut "
           << statistics["cut_septa"] << " septa, "

@@ -169,7 +169,7 @@ namespace ssc
   nlohmann::ordered_json
   MicrostructureCoupling::embedded_summary() const
   {
-    return {
+    nlohmann::ordered_json summary = {
       {"septa_triangles",
        microstructure ? microstructure->septa_mesh().n_active_cells() : 0},
       {"ligament_segments",
@@ -184,5 +184,8 @@ namespace ssc
       {"ligament_length_mm", ligament_length},
       {"ligament_length_in_quadrature_mm", ligament_length_covered},
       {"clip_seconds", clip_seconds}};
+    if (microstructure)
+      summary["fasciotomy"] = microstructure->fasciotomy_summary();
+    return summary;
   }
 } // namespace ssc

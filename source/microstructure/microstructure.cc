@@ -323,14 +323,20 @@ namespace ssc
             {"ligaments", all_ligaments.size()},
             {"ligament_segments", n_segments},
             {"layers", layers_json},
-            {"fasciotomy",
-             {{"enabled", parameters.fasciotomy.enabled},
-              {"centre_mm",
-               {parameters.fasciotomy.centre[0],
-                parameters.fasciotomy.centre[1]}},
-              {"radius_mm", parameters.fasciotomy.radius},
-              {"cut_septa", n_cut_septa},
-              {"cut_septa_area_mm2", cut_septa_area},
-              {"cut_ligaments", n_cut_ligaments}}}};
+            {"fasciotomy", fasciotomy_summary()}};
+  }
+
+
+  nlohmann::ordered_json
+  Microstructure::fasciotomy_summary() const
+  {
+    return {{"enabled", parameters.fasciotomy.enabled},
+            {"centre_mm",
+             {parameters.fasciotomy.centre[0],
+              parameters.fasciotomy.centre[1]}},
+            {"radius_mm", parameters.fasciotomy.radius},
+            {"cut_septa", n_cut_septa},
+            {"cut_septa_area_mm2", cut_septa_area},
+            {"cut_ligaments", n_cut_ligaments}};
   }
 } // namespace ssc

@@ -43,7 +43,7 @@ namespace ssc
     write(RunOutput &output, const unsigned int step, const double time) const;
 
     /// The summary's "embedded" entry (counts of triangles, segments,
-    /// lobules and quadrature points).
+    /// lobules and quadrature points, and what a fasciotomy cut).
     nlohmann::ordered_json
     embedded_summary() const;
 

@@ -101,6 +101,11 @@ namespace ssc
     nlohmann::ordered_json
     statistics() const;
 
+    /// What the fasciotomy cut (septa, their area, ligaments) and where,
+    /// for summary.json.
+    nlohmann::ordered_json
+    fasciotomy_summary() const;
+
     /// Area-weighted centroid of a septum.
     static Point<3>
     centroid(const Septum &septum);
