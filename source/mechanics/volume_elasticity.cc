@@ -262,6 +262,33 @@ namespace ssc
                           });
         constrained_dofs_per_condition[c].compress();
       }
+    // A tie's master can be relevant on a rank that sees none of its faces
+    // (it was added above), so only the ranks that do see them know a
+    // Dirichlet condition on it (displacement control with the edge
+    // contact). Every rank must constrain it alike: otherwise the blocks
+    // the others add to its row (the contact's punch height) survive as a
+    // residual that Newton's method cannot remove.
+    for (const types::global_dof_index master : tie_masters)
+      {
+        unsigned int condition = numbers::invalid_unsigned_int;
+        double       value     = -std::numeric_limits<double>::max();
+        for (const auto &[dof, dof_value] : dirichlet_values)
+          if (dof == master)
+            value = dof_value;
+        for (unsigned int c = 0; c < conditions.size(); ++c)
+          if (condition == numbers::invalid_unsigned_int &&
+              constrained_dofs_per_condition[c].is_element(master))
+            condition = c;
+        condition = Utilities::MPI::min(condition, mpi_communicator);
+        value     = Utilities::MPI::max(value, mpi_communicator);
+        if (condition == numbers::invalid_unsigned_int ||
+            constraints.is_constrained(master))
+          continue;
+        constraints.add_line(master);
+        constraints.set_inhomogeneity(master, value);
+        dirichlet_values.emplace_back(master, value);
+        constrained_dofs_per_condition[condition].add_index(master);
+      }
     // Ties: u_i = u_master; their reaction counts as condition
     // conditions.size() + t (the master included).
     for (unsigned int t = 0; t < ties.size(); ++t)
