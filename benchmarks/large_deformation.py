@@ -3,8 +3,8 @@
 with its microstructure) up to 1.8 N: linear versus corotational versus
 neo-Hookean layers, bonded and frictionless punch, force control.
 
-Every law uses the Q1 mixed formulation (mean dilatation at finite strain;
-the enhanced modes of the scene's default are for the linear law only) on
+Every law uses the Q1 mixed formulation by default (mean dilatation at
+finite strain; the enhanced modes of the scene's default are for the linear law only) on
 the scene's mesh with fewer refinements towards the punch edge
 (Mesh/Region of interest/Local refinements, default 1: 59k DoFs, as in
 prm/forearm_indentation_finite_strain.prm).
@@ -17,8 +17,15 @@ ranks.
 
 Writes benchmarks/results/large_deformation.csv and .png.
 
+--formulation displacement runs every law with the plain Q1 displacement
+formulation instead (large_deformation_displacement.csv and .png): it
+locks more at nu = 0.49 (stiffer), but as a conforming discretisation of
+the hyperelastic energy it has no spurious unstable modes; the mean
+dilatation develops one under the punch at about 11.2 mm depth on this
+mesh (benchmarks/README.md).
+
     /usr/bin/python3 benchmarks/large_deformation.py [--refinements N]
-                                                     [--plot-only]
+        [--formulation mixed|displacement] [--plot-only]
 """
 import csv, os, re, subprocess, sys, tempfile, time
 
@@ -34,12 +41,12 @@ FIELDS = ["law", "contact", "dofs", "step", "force_N", "depth_mm",
           "wall_time_s", "total_wall_time_s", "status"]
 
 
-def run(law, contact, refinements, folder):
+def run(law, contact, refinements, formulation, folder):
     name = f"{law}_{contact}".replace("-", "_")
     overrides = {
         "Run/Output directory": folder, "Run/Name": name,
         "Run/Write fields": "false", "Punch/Section": "false",
-        "Punch/Contact": contact, "Elasticity/Formulation": "mixed",
+        "Punch/Contact": contact, "Elasticity/Formulation": formulation,
         "Mesh/Region of interest/Local refinements": str(refinements)}
     for layer in LAYERS:
         overrides[f"Layer stack/{layer}/Material model"] = law
@@ -104,7 +111,7 @@ def stopped_run_rows(law, contact, log, message, total):
     return rows
 
 
-def plot(rows, path):
+def plot(rows, path, formulation):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -132,31 +139,40 @@ def plot(rows, path):
         a.grid(True, alpha=0.3)
         a.legend()
     dofs = rows[0]["dofs"] if rows else "?"
-    fig.suptitle("Forearm indentation with septa and ligaments, Q1 mixed, "
-                 f"{dofs} DoFs: linear vs corotational vs neo-Hookean")
+    fig.suptitle("Forearm indentation with septa and ligaments, "
+                 f"Q1 {formulation}, {dofs} DoFs: linear vs corotational "
+                 "vs neo-Hookean")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
 
 
 def main():
     os.makedirs(OUT, exist_ok=True)
-    csv_path = os.path.join(OUT, "large_deformation.csv")
     refinements = 1
     if "--refinements" in sys.argv:
         refinements = int(sys.argv[sys.argv.index("--refinements") + 1])
+    formulation = "mixed"
+    if "--formulation" in sys.argv:
+        formulation = sys.argv[sys.argv.index("--formulation") + 1]
+        if formulation not in ("mixed", "displacement"):
+            sys.exit("--formulation: mixed or displacement")
+    stem = "large_deformation" + ("" if formulation == "mixed" else
+                                  "_" + formulation)
+    csv_path = os.path.join(OUT, stem + ".csv")
     if "--plot-only" not in sys.argv:
         rows = []
         with tempfile.TemporaryDirectory() as folder:
             for contact in CONTACTS:
                 for law in LAWS:
-                    rows += run(law, contact, refinements, folder)
+                    rows += run(law, contact, refinements, formulation,
+                                folder)
         with open(csv_path, "w", newline="") as f:
             writer = csv.DictWriter(f, fieldnames=FIELDS)
             writer.writeheader()
             writer.writerows(rows)
     with open(csv_path) as f:
         rows = list(csv.DictReader(f))
-    plot(rows, os.path.join(OUT, "large_deformation.png"))
+    plot(rows, os.path.join(OUT, stem + ".png"), formulation)
 
 
 if __name__ == "__main__":
