@@ -4,8 +4,8 @@ with its microstructure) up to 1.8 N: linear versus corotational versus
 neo-Hookean layers, bonded and frictionless punch, force control.
 
 Every law uses the Q1 mixed formulation by default (mean dilatation at
-finite strain; the enhanced modes of the scene's default are for the linear law only) on
-the scene's mesh with fewer refinements towards the punch edge
+finite strain; the enhanced modes of the scene's default are for the
+linear law only) on the scene's mesh with fewer refinements towards the punch edge
 (Mesh/Region of interest/Local refinements, default 1: 59k DoFs, as in
 prm/forearm_indentation_finite_strain.prm).
 The finite-strain runs use tension-field septa and tension-only ligaments
@@ -19,10 +19,10 @@ Writes benchmarks/results/large_deformation.csv and .png.
 
 --formulation displacement runs every law with the plain Q1 displacement
 formulation instead (large_deformation_displacement.csv and .png): it
-locks more at nu = 0.49 (stiffer), but as a conforming discretisation of
-the hyperelastic energy it has no spurious unstable modes; the mean
-dilatation develops one under the punch at about 11.2 mm depth on this
-mesh (benchmarks/README.md).
+locks at nu = 0.49 (15-17 % shallower) and so reaches 1.8 N at about
+10 mm, before the depth of about 11.2 mm where the mixed runs stop on
+this mesh (and where the displacement formulation crawls as well under
+displacement control; benchmarks/README.md).
 
     /usr/bin/python3 benchmarks/large_deformation.py [--refinements N]
         [--formulation mixed|displacement] [--plot-only]
