@@ -271,16 +271,15 @@ namespace ssc
     for (const types::global_dof_index master : tie_masters)
       {
         unsigned int condition = numbers::invalid_unsigned_int;
-        double       value     = -std::numeric_limits<double>::max();
-        for (const auto &[dof, dof_value] : dirichlet_values)
-          if (dof == master)
-            value = dof_value;
         for (unsigned int c = 0; c < conditions.size(); ++c)
           if (condition == numbers::invalid_unsigned_int &&
               constrained_dofs_per_condition[c].is_element(master))
             condition = c;
-        condition = Utilities::MPI::min(condition, mpi_communicator);
-        value     = Utilities::MPI::max(value, mpi_communicator);
+        double value = condition == numbers::invalid_unsigned_int ?
+                         -std::numeric_limits<double>::max() :
+                         constraints.get_inhomogeneity(master);
+        condition    = Utilities::MPI::min(condition, mpi_communicator);
+        value        = Utilities::MPI::max(value, mpi_communicator);
         if (condition == numbers::invalid_unsigned_int ||
             constraints.is_constrained(master))
           continue;

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 namespace ssc
 {
@@ -53,6 +55,25 @@ namespace ssc
       for (unsigned int k = 0; k <= half; ++k)
         kernel[k] = std::exp(-0.5 * std::pow(k * h / sigma, 2));
       return kernel;
+    }
+
+    /// First and last index of the grid coordinates @p t with |t| <= @p
+    /// half_width (all of them for half_width <= 0); at least two.
+    std::pair<unsigned int, unsigned int>
+    window_indices(const std::vector<double> &t, const double half_width)
+    {
+      unsigned int first = std::numeric_limits<unsigned int>::max(), last = 0;
+      for (unsigned int i = 0; i < t.size(); ++i)
+        if (half_width <= 0 || std::abs(t[i]) <= half_width * (1 + 1e-12))
+          {
+            first = std::min(first, i);
+            last  = i;
+          }
+      AssertThrow(first != std::numeric_limits<unsigned int>::max() &&
+                    last > first,
+                  dealii::ExcMessage("The metrics window holds fewer than "
+                                     "2 x 2 grid points."));
+      return {first, last};
     }
   } // namespace
 
@@ -112,28 +133,10 @@ namespace ssc
           plane_at(i, j);
 
     // the window of the metrics
-    const auto inside = [half_width](const double t) {
-      return half_width <= 0 || std::abs(t) <= half_width * (1 + 1e-12);
-    };
-    metrics.first_x = metrics.first_y = std::numeric_limits<unsigned>::max();
-    metrics.last_x = metrics.last_y = 0;
-    for (unsigned int i = 0; i < nx; ++i)
-      if (inside(elevation.x[i]))
-        {
-          metrics.first_x = std::min(metrics.first_x, i);
-          metrics.last_x  = i;
-        }
-    for (unsigned int j = 0; j < ny; ++j)
-      if (inside(elevation.y[j]))
-        {
-          metrics.first_y = std::min(metrics.first_y, j);
-          metrics.last_y  = j;
-        }
-    AssertThrow(metrics.last_x > metrics.first_x &&
-                  metrics.last_y > metrics.first_y &&
-                  metrics.first_x != std::numeric_limits<unsigned>::max(),
-                dealii::ExcMessage("The metrics window holds fewer than 2 x 2 "
-                                   "grid points."));
+    std::tie(metrics.first_x, metrics.last_x) =
+      window_indices(elevation.x, half_width);
+    std::tie(metrics.first_y, metrics.last_y) =
+      window_indices(elevation.y, half_width);
 
     metrics.max_elevation = -std::numeric_limits<double>::max();
     double       sum = 0, square = 0, volume = 0;
