@@ -261,9 +261,6 @@ namespace ssc
                 ExcMessage("Punch/Edge contact needs Newton's method: give "
                            "at least one layer a nonlinear Material model "
                            "(corotational or neo-Hookean)."));
-    AssertThrow(!punch.edge_contact || elasticity.degree == 1,
-                ExcMessage("Punch/Edge contact is implemented for Q1: set "
-                           "Elasticity/Degree = 1."));
     if (microstructure.lobules || microstructure.ligaments)
       {
         // throws unless the region overlaps the patch

@@ -71,11 +71,8 @@ namespace ssc
     , face_dof(std::move(face_dof))
     , mpi_communicator(dof_handler.get_communicator())
   {
-    const auto &fe = dof_handler.get_fe();
-    AssertThrow(fe.degree == 1,
-                ExcMessage("Punch/Edge contact is implemented for "
-                           "Elasticity/Degree = 1."));
-    const auto radius_of = [&](const Point<3> &X) {
+    const auto &fe        = dof_handler.get_fe();
+    const auto  radius_of = [&](const Point<3> &X) {
       return std::hypot(X[0] - geometry.centre[0], X[1] - geometry.centre[1]);
     };
     const QGauss<2>                      quadrature(4);
