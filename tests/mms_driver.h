@@ -6,8 +6,6 @@
 // exact solution as Dirichlet data on all six sides, and logs the L2 and H1
 // errors with their observed rates.
 
-#include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/timer.h>
 
 #include <ssc/background_mesh.h>
 #include <ssc/mechanics/volume_elasticity.h>
@@ -17,6 +15,7 @@
 #include <iostream>
 
 #include "manufactured_solution.h"
+#include "quiet_elasticity.h"
 #include "tests.h"
 
 namespace ssc_test
@@ -50,13 +49,8 @@ namespace ssc_test
         parameters.formulation    = formulation;
         parameters.tolerance      = 1e-12;
         parameters.max_iterations = 5000;
-        TimerOutput           timer(MPI_COMM_WORLD,
-                          std::cout,
-                          TimerOutput::never,
-                          TimerOutput::wall_times);
-        ConditionalOStream    pcout(std::cout, false);
-        ssc::VolumeElasticity elasticity(
-          mesh, layers, parameters, timer, pcout);
+        QuietElasticity        quiet(mesh, layers, parameters);
+        ssc::VolumeElasticity &elasticity = quiet.elasticity;
         elasticity.setup_dofs();
         std::vector<ssc::DirichletCondition> conditions;
         auto exact_ptr = std::make_shared<ExactDisplacement>(field, layers);

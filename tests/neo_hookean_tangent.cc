@@ -13,8 +13,6 @@
 // by 60 degrees leaves every law stress-free (objectivity); with a uniform
 // growth g, so does the rotated expansion by (1 + g)^{1/3}.
 
-#include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/timer.h>
 
 #include <deal.II/dofs/dof_tools.h>
 
@@ -31,6 +29,7 @@
 #include <map>
 #include <random>
 
+#include "quiet_elasticity.h"
 #include "tangent_check.h"
 #include "tests.h"
 
@@ -44,12 +43,8 @@ main(int argc, char **argv)
   ssc::LayerStack layers;
   layers.add_layer("skin", ssc::LayerKind::skin, "1 + 0.1*x", 0.02, 0.45, 1);
   layers.add_layer("fat", ssc::LayerKind::SAT, "1.5 - 0.1*y", 0.001, 0.49, 1);
-  ssc::MeshParameters mesh_parameters;
-  mesh_parameters.patch_length_x  = 2;
-  mesh_parameters.patch_length_y  = 2;
-  mesh_parameters.cell_size       = 1;
-  mesh_parameters.core_half_width = 10;
-  ssc::BackgroundMesh mesh(layers, mesh_parameters, MPI_COMM_WORLD);
+  const ssc::MeshParameters mesh_parameters = uniform_patch(2, 1);
+  ssc::BackgroundMesh       mesh(layers, mesh_parameters, MPI_COMM_WORLD);
   mesh.build();
 
   // a tilted membrane (two triangles) and a cable through the patch
@@ -133,12 +128,8 @@ main(int argc, char **argv)
       parameters.formulation = formulation;
       if (variant.find("stabilisation") != std::string::npos)
         parameters.volumetric_stabilisation = 0.1;
-      TimerOutput           timer(MPI_COMM_WORLD,
-                        std::cout,
-                        TimerOutput::never,
-                        TimerOutput::wall_times);
-      ConditionalOStream    pcout(std::cout, false);
-      ssc::VolumeElasticity elasticity(mesh, layers, parameters, timer, pcout);
+      QuietElasticity        quiet(mesh, layers, parameters);
+      ssc::VolumeElasticity &elasticity = quiet.elasticity;
       elasticity.setup_dofs();
       elasticity.setup_system({});
       const ssc::PointLocator                  locator(mesh.triangulation(),

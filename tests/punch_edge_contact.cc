@@ -9,8 +9,6 @@
 //   including the columns of the punch-height dof that the contact couples
 //   to; with Q1 and with Q2 elements.
 
-#include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/timer.h>
 
 #include <ssc/background_mesh.h>
 #include <ssc/mechanics/rigid_punch_contact.h>
@@ -20,6 +18,7 @@
 #include <iostream>
 #include <random>
 
+#include "quiet_elasticity.h"
 #include "tangent_check.h"
 #include "tests.h"
 
@@ -77,22 +76,14 @@ namespace
     layers.add_layer("fat", ssc::LayerKind::SAT, "1.5", 0.001, 0.49, 1);
     for (unsigned int l = 0; l < 2; ++l)
       layers.set_model(l, ssc::MaterialModel::neo_hookean);
-    ssc::MeshParameters mesh_parameters;
-    mesh_parameters.patch_length_x  = 4;
-    mesh_parameters.patch_length_y  = 4;
-    mesh_parameters.cell_size       = 1;
-    mesh_parameters.core_half_width = 10;
-    ssc::BackgroundMesh mesh(layers, mesh_parameters, MPI_COMM_WORLD);
+    const ssc::MeshParameters mesh_parameters = uniform_patch(4, 1);
+    ssc::BackgroundMesh       mesh(layers, mesh_parameters, MPI_COMM_WORLD);
     mesh.build();
     ssc::ElasticityParameters parameters;
     parameters.formulation = ssc::Formulation::mixed;
     parameters.degree      = degree;
-    TimerOutput           timer(MPI_COMM_WORLD,
-                      std::cout,
-                      TimerOutput::never,
-                      TimerOutput::wall_times);
-    ConditionalOStream    pcout(std::cout, false);
-    ssc::VolumeElasticity elasticity(mesh, layers, parameters, timer, pcout);
+    QuietElasticity        quiet(mesh, layers, parameters);
+    ssc::VolumeElasticity &elasticity = quiet.elasticity;
     elasticity.setup_dofs();
     types::global_dof_index centre_z = numbers::invalid_dof_index;
     for (const auto &cell :

@@ -14,9 +14,7 @@
 // mixed formulations). The Newton residuals of the last load step of one case
 // show the quadratic convergence.
 
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
-#include <deal.II/base/timer.h>
 
 #include <ssc/background_mesh.h>
 #include <ssc/mechanics/newton_solver.h>
@@ -26,6 +24,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "quiet_elasticity.h"
 #include "tests.h"
 
 using namespace dealii;
@@ -81,12 +80,8 @@ main(int argc, char **argv)
   initlog();
   ssc::LayerStack layers;
   layers.add_layer("block", ssc::LayerKind::deep, "2", 0.01, 0.45, 2);
-  ssc::MeshParameters mesh_parameters;
-  mesh_parameters.patch_length_x  = 2;
-  mesh_parameters.patch_length_y  = 2;
-  mesh_parameters.cell_size       = 1;
-  mesh_parameters.core_half_width = 10;
-  ssc::BackgroundMesh mesh(layers, mesh_parameters, MPI_COMM_WORLD);
+  const ssc::MeshParameters mesh_parameters = uniform_patch(2, 1);
+  ssc::BackgroundMesh       mesh(layers, mesh_parameters, MPI_COMM_WORLD);
   mesh.build();
   for (const auto model :
        {ssc::MaterialModel::neo_hookean, ssc::MaterialModel::corotational})
@@ -101,13 +96,8 @@ main(int argc, char **argv)
           ssc::NewtonParameters newton_parameters;
           newton_parameters.relative_tolerance = 1e-12;
           newton_parameters.absolute_tolerance = 1e-16;
-          TimerOutput           timer(MPI_COMM_WORLD,
-                            std::cout,
-                            TimerOutput::never,
-                            TimerOutput::wall_times);
-          ConditionalOStream    pcout(std::cout, false);
-          ssc::VolumeElasticity elasticity(
-            mesh, layers, parameters, timer, pcout);
+          QuietElasticity        quiet(mesh, layers, parameters);
+          ssc::VolumeElasticity &elasticity = quiet.elasticity;
           elasticity.setup_dofs();
           const auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
           // unit value: the face x = 1 moves by 1 mm (stretch 1.5 at 1)
@@ -121,7 +111,10 @@ main(int argc, char **argv)
                                    {ssc::BoundaryId::x_max, x, move, {}},
                                    {ssc::BoundaryId::y_min, y, zero, {}},
                                    {ssc::BoundaryId::bottom, z, zero, {}}});
-          ssc::NewtonSolver newton(elasticity, newton_parameters, pcout, false);
+          ssc::NewtonSolver newton(elasticity,
+                                   newton_parameters,
+                                   quiet.pcout,
+                                   false);
           double            increment = 0.1;
           const double      target    = 2. * (lambda - 1.); // length 2 mm
           const auto        report    = newton.follow(

@@ -1,0 +1,48 @@
+#ifndef ssc_tests_quiet_elasticity_h
+#define ssc_tests_quiet_elasticity_h
+
+// The pieces every unit test of the mechanics builds alike: a uniform square
+// patch and a volume solver that prints nothing.
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <ssc/background_mesh.h>
+#include <ssc/mechanics/volume_elasticity.h>
+
+#include <iostream>
+
+/// A square patch @p length mm wide with cells of @p cell_size mm, all of
+/// them in the ungraded core.
+inline ssc::MeshParameters
+uniform_patch(const double length, const double cell_size)
+{
+  ssc::MeshParameters parameters;
+  parameters.patch_length_x  = length;
+  parameters.patch_length_y  = length;
+  parameters.cell_size       = cell_size;
+  parameters.core_half_width = 10;
+  return parameters;
+}
+
+/// A VolumeElasticity with a timer that never reports and an output stream
+/// that is off; the solver keeps references to both, so they live beside it.
+struct QuietElasticity
+{
+  QuietElasticity(ssc::BackgroundMesh             &mesh,
+                  const ssc::LayerStack           &layers,
+                  const ssc::ElasticityParameters &parameters)
+    : timer(MPI_COMM_WORLD,
+            std::cout,
+            dealii::TimerOutput::never,
+            dealii::TimerOutput::wall_times)
+    , pcout(std::cout, false)
+    , elasticity(mesh, layers, parameters, timer, pcout)
+  {}
+
+  dealii::TimerOutput        timer;
+  dealii::ConditionalOStream pcout;
+  ssc::VolumeElasticity      elasticity;
+};
+
+#endif
