@@ -133,7 +133,9 @@ def plot(rows, path, formulation, degree):
             for r in failed:
                 words = r["status"].split("failed at load ")
                 where = (f"stops at {float(words[1].split()[0]):.3f} N"
-                         if len(words) > 1 else "failed")
+                         if len(words) > 1 else
+                         "not finished" if r["status"].startswith(
+                             "not finished") else "failed")
                 a.plot([], [], " ", label=f"{law}: {where}")
             if not rs:
                 continue
