@@ -6,7 +6,6 @@
 // exact solution as Dirichlet data on all six sides, and logs the L2 and H1
 // errors with their observed rates.
 
-
 #include <ssc/background_mesh.h>
 #include <ssc/mechanics/volume_elasticity.h>
 

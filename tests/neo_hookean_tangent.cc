@@ -13,7 +13,6 @@
 // by 60 degrees leaves every law stress-free (objectivity); with a uniform
 // growth g, so does the rotated expansion by (1 + g)^{1/3}.
 
-
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/grid/tria_description.h>

@@ -9,7 +9,6 @@
 //   including the columns of the punch-height dof that the contact couples
 //   to; with Q1 and with Q2 elements.
 
-
 #include <ssc/background_mesh.h>
 #include <ssc/mechanics/rigid_punch_contact.h>
 #include <ssc/mechanics/volume_elasticity.h>
