@@ -5,15 +5,15 @@ neo-Hookean layers, bonded and frictionless punch, force control.
 
 Every law uses the Q1 mixed formulation by default (mean dilatation at
 finite strain; the enhanced modes of the scene's default are for the
-linear law only) on the scene's mesh with fewer refinements towards the punch edge
-(Mesh/Region of interest/Local refinements, default 1: 59k DoFs, as in
-prm/forearm_indentation_finite_strain.prm).
-The finite-strain runs use tension-field septa and tension-only ligaments
-(Embedded/Septa/Tension field, Embedded/Ligaments/Tension only): compressed
-septa wrinkle and compressed ligaments go slack; and the skin touches the
-punch's rounded edge (Punch/Edge contact) instead of passing through it. Records per load step the
-depth, Newton iterations, CG iterations, load cuts and wall time on 2 MPI
-ranks.
+linear law only) on the scene's mesh with fewer refinements towards the
+punch edge (Mesh/Region of interest/Local refinements, default 1: 59k
+DoFs, as in prm/forearm_indentation_finite_strain.prm). The finite-strain
+runs use tension-field septa and tension-only ligaments
+(Embedded/Septa/Tension field, Embedded/Ligaments/Tension only):
+compressed septa wrinkle and compressed ligaments go slack; and the skin
+touches the punch's rounded edge (Punch/Edge contact) instead of passing
+through it. Records per load step the depth, Newton iterations, CG
+iterations, load cuts and wall time on 2 MPI ranks.
 
 Writes benchmarks/results/large_deformation.csv and .png.
 
@@ -33,7 +33,7 @@ at 13.46 mm (benchmarks/README.md); the whole table takes hours.
     /usr/bin/python3 benchmarks/large_deformation.py [--refinements N]
         [--formulation mixed|displacement] [--degree 1|2] [--plot-only]
 """
-import csv, os, re, subprocess, sys, tempfile, time
+import argparse, csv, os, re, subprocess, tempfile, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SSC = os.path.join(ROOT, "build", "bin", "ssc")
@@ -132,10 +132,12 @@ def plot(rows, path, formulation, degree):
                       r["contact"] == contact and r["status"] != "converged"]
             for r in failed:
                 words = r["status"].split("failed at load ")
-                where = (f"stops at {float(words[1].split()[0]):.3f} N"
-                         if len(words) > 1 else
-                         "not finished" if r["status"].startswith(
-                             "not finished") else "failed")
+                if len(words) > 1:
+                    where = f"stops at {float(words[1].split()[0]):.3f} N"
+                elif r["status"].startswith("not finished"):
+                    where = "not finished"
+                else:
+                    where = "failed"
                 a.plot([], [], " ", label=f"{law}: {where}")
             if not rs:
                 continue
@@ -149,32 +151,28 @@ def plot(rows, path, formulation, degree):
         a.legend()
     dofs = rows[0]["dofs"] if rows else "?"
     fig.suptitle("Forearm indentation with septa and ligaments, "
-                 f"Q{degree} {formulation}, {dofs} DoFs: linear vs corotational "
-                 "vs neo-Hookean")
+                 f"Q{degree} {formulation}, {dofs} DoFs: linear vs "
+                 "corotational vs neo-Hookean")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
 
 
 def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--refinements", type=int, default=1)
+    parser.add_argument("--formulation", choices=["mixed", "displacement"],
+                        default="mixed")
+    parser.add_argument("--degree", type=int, choices=[1, 2], default=1)
+    parser.add_argument("--plot-only", action="store_true")
+    args = parser.parse_args()
+    refinements, formulation, degree = (args.refinements, args.formulation,
+                                        args.degree)
     os.makedirs(OUT, exist_ok=True)
-    refinements = 1
-    if "--refinements" in sys.argv:
-        refinements = int(sys.argv[sys.argv.index("--refinements") + 1])
-    formulation = "mixed"
-    if "--formulation" in sys.argv:
-        formulation = sys.argv[sys.argv.index("--formulation") + 1]
-        if formulation not in ("mixed", "displacement"):
-            sys.exit("--formulation: mixed or displacement")
-    degree = 1
-    if "--degree" in sys.argv:
-        degree = int(sys.argv[sys.argv.index("--degree") + 1])
-        if degree not in (1, 2):
-            sys.exit("--degree: 1 or 2")
     stem = ("large_deformation" +
             ("" if formulation == "mixed" else "_" + formulation) +
             ("" if degree == 1 else f"_q{degree}"))
     csv_path = os.path.join(OUT, stem + ".csv")
-    if "--plot-only" not in sys.argv:
+    if not args.plot_only:
         rows = []
         with tempfile.TemporaryDirectory() as folder:
             for contact in CONTACTS:
