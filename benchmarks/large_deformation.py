@@ -67,8 +67,10 @@ def run(law, contact, refinements, formulation, degree, folder):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     start = time.time()
+    # a guard against a hang, not a limit on a slow run: a Q2 run takes
+    # about an hour on this machine
     result = subprocess.run(args, capture_output=True, text=True, env=env,
-                            timeout=3600)
+                            timeout=3600 * degree**2)
     total = time.time() - start
     if result.returncode != 0:
         lines = [l for l in result.stderr.splitlines() if "error" in l]
