@@ -6,6 +6,7 @@
 #include <ssc/mechanics/embedded_elasticity.h>
 
 #include <array>
+#include <cmath>
 
 namespace ssc
 {
@@ -125,6 +126,7 @@ namespace ssc
   EmbeddedElasticity::add_to_cell_nonlinear(
     const DoFHandler<3>::active_cell_iterator &cell,
     const Vector<double>                      &u,
+    const bool                                 with_matrix,
     FullMatrix<double>                        &cell_matrix,
     Vector<double>                            &cell_residual) const
   {
@@ -161,41 +163,81 @@ namespace ssc
                 de[i] = a[component[i]] * gd[i];
                 cell_residual(i) += S * de[i];
               }
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int j = 0; j < n; ++j)
-                cell_matrix(i, j) +=
-                  (slack ? 0. : local[q].first * de[i] * de[j]) +
-                  (component[i] == component[j] ? S * gd[i] * gd[j] : 0.);
+            if (with_matrix)
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  cell_matrix(i, j) +=
+                    (slack ? 0. : local[q].first * de[i] * de[j]) +
+                    (component[i] == component[j] ? S * gd[i] * gd[j] : 0.);
           }
         else
           {
             // E = (P F^T F P - P)/2, S = dW/dE (membrane_state());
-            // dE_i = sym(a_i (x) b_i), a_i = P F^T e_ci, b_i = P g_i
+            // dE_i = sym(a_i (x) b_i), a_i = P F^T e_ci, b_i = P g_i.
+            // Strain variations lie in the tangent plane, whose symmetric
+            // tensors form a space of dimension 3: in the basis
+            // B_k = t1 t1, t2 t2, t1 t2 + t2 t1 (t1, t2 orthonormal in the
+            // plane) dE_i has the coordinates v_i, S:dE_i = s.v_i with
+            // s_k = S:B_k, and d2W[dE_i, dE_j] = v_i.D v_j with
+            // D_kl = d2W[B_k, B_l]: the n^2 tangent entries cost a dot
+            // product of 3-vectors each instead of tensor contractions.
             Tensor<2, 3> P = unit_symmetric_tensor<3>();
             P -= outer_product(d, d);
-            const Tensor<2, 3>        E = 0.5 * (P * transpose(F) * F * P - P);
-            const Tensor<2, 3>        PFt   = P * transpose(F);
-            const MembraneState       state = membrane_state(E, P, local[q]);
-            std::vector<Tensor<2, 3>> dE(n);
-            std::vector<Tensor<1, 3>> b(n);
+            const Tensor<2, 3>  E     = 0.5 * (P * transpose(F) * F * P - P);
+            const Tensor<2, 3>  PFt   = P * transpose(F);
+            const MembraneState state = membrane_state(E, P, local[q]);
+            const auto [t1, t2]       = tangent_basis(d);
+            const std::array<Tensor<2, 3>, 3> basis = {
+              {outer_product(t1, t1),
+               outer_product(t2, t2),
+               outer_product(t1, t2) + outer_product(t2, t1)}};
+            Tensor<1, 3> s;
+            Tensor<2, 3> D;
+            for (unsigned int k = 0; k < 3; ++k)
+              {
+                s[k] = scalar_product(state.stress, basis[k]);
+                for (unsigned int l = 0; l < 3; ++l)
+                  D[k][l] = state.second_derivative(basis[k], basis[l]);
+              }
+            std::vector<Tensor<1, 3>> v(n), Dv(n), b(n), Sb(n);
             for (unsigned int i = 0; i < n; ++i)
               {
                 Tensor<1, 3> a;
                 for (unsigned int k = 0; k < 3; ++k)
                   a[k] = PFt[k][component[i]];
-                b[i]                  = P * g[i];
-                const Tensor<2, 3> ab = outer_product(a, b[i]);
-                dE[i]                 = 0.5 * (ab + transpose(ab));
-                cell_residual(i) += scalar_product(state.stress, dE[i]);
+                b[i]            = P * g[i];
+                Sb[i]           = state.stress * b[i];
+                const double a1 = a * t1, a2 = a * t2;
+                const double b1 = b[i] * t1, b2 = b[i] * t2;
+                v[i][0] = a1 * b1;
+                v[i][1] = a2 * b2;
+                v[i][2] = 0.5 * (a1 * b2 + a2 * b1);
+                Dv[i]   = D * v[i];
+                cell_residual(i) += s * v[i];
               }
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int j = 0; j < n; ++j)
-                cell_matrix(i, j) +=
-                  state.second_derivative(dE[i], dE[j]) +
-                  (component[i] == component[j] ? b[j] * (state.stress * b[i]) :
-                                                  0.);
+            if (with_matrix)
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  cell_matrix(i, j) +=
+                    Dv[i] * v[j] +
+                    (component[i] == component[j] ? b[j] * Sb[i] : 0.);
           }
       }
+  }
+
+
+  std::pair<Tensor<1, 3>, Tensor<1, 3>>
+  EmbeddedElasticity::tangent_basis(const Tensor<1, 3> &normal)
+  {
+    // the coordinate axis least aligned with the normal, projected
+    unsigned int axis = 0;
+    for (unsigned int k = 1; k < 3; ++k)
+      if (std::abs(normal[k]) < std::abs(normal[axis]))
+        axis = k;
+    Tensor<1, 3> t1 = -normal[axis] * normal;
+    t1[axis] += 1.;
+    t1 /= t1.norm();
+    return {t1, cross_product_3d(normal, t1)};
   }
 
 

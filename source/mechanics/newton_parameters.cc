@@ -68,6 +68,23 @@ namespace ssc
                       "follows the residual (switched evolution "
                       "relaxation). Newton's method takes over again once "
                       "the residual has dropped tenfold.");
+    prm.declare_entry(
+      "Forcing term",
+      "Eisenstat-Walker",
+      Patterns::Selection("fixed|Eisenstat-Walker"),
+      "How accurately each Newton update is solved. fixed: to "
+      "Elasticity/Linear solver/Tolerance relative to the residual, every "
+      "time. Eisenstat-Walker (inexact Newton, their second choice): to "
+      "eta times the residual, eta = 0.9 (r_k/r_{k-1})^2, at most Max "
+      "forcing term and at least the linear solver's tolerance: loose far "
+      "from the solution, where an accurate update is wasted work, tight "
+      "near it, so that the convergence stays quadratic.");
+    prm.declare_entry("Max forcing term",
+                      "0.01",
+                      Patterns::Double(0, 0.5),
+                      "Largest relative tolerance of a Newton update with "
+                      "the Eisenstat-Walker forcing term (also that of the "
+                      "first update of every increment).");
     prm.leave_subsection();
   }
 
@@ -87,6 +104,10 @@ namespace ssc
     easy_iterations         = prm.get_integer("Easy iterations");
     continuation_iterations = prm.get_integer("Continuation iterations");
     continuation_shift      = prm.get_double("Continuation shift");
+    forcing_term            = prm.get("Forcing term") == "fixed" ?
+                                ForcingTerm::fixed :
+                                ForcingTerm::eisenstat_walker;
+    max_forcing_term        = prm.get_double("Max forcing term");
     AssertThrow(continuation_iterations == 0 || continuation_shift > 0,
                 ExcMessage("Nonlinear solver/Continuation shift must be "
                            "positive when Continuation iterations is not 0."));

@@ -9,6 +9,22 @@
 
 namespace ssc
 {
+  double
+  NewtonSolver::eisenstat_walker(const double previous_forcing,
+                                 const double residual_ratio) const
+  {
+    // Eisenstat and Walker (SIAM J. Sci. Comput. 17, 1996), choice 2 with
+    // gamma = 0.9 and alpha = 2, and their safeguard against a forcing term
+    // that falls faster than the convergence justifies
+    const double gamma     = 0.9;
+    double       forcing   = gamma * residual_ratio * residual_ratio;
+    const double safeguard = gamma * previous_forcing * previous_forcing;
+    if (safeguard > 0.1)
+      forcing = std::max(forcing, safeguard);
+    return std::min(forcing, parameters.max_forcing_term);
+  }
+
+
   NewtonSolver::NewtonSolver(VolumeElasticity       &elasticity,
                              const NewtonParameters &parameters,
                              ConditionalOStream     &pcout,
@@ -52,7 +68,12 @@ namespace ssc
     double       shift = 0., last_shift = 0., continuation_start = 0.;
     unsigned int continuation_iterations = 0;
     unsigned int newton_iterations       = 0;
-    const auto   continuation_exhausted  = [&]() {
+    // the forcing term: the relative accuracy of the next update (0: the
+    // linear solver's own tolerance)
+    const bool inexact =
+      parameters.forcing_term == ForcingTerm::eisenstat_walker;
+    double     forcing = inexact ? parameters.max_forcing_term : 0.;
+    const auto continuation_exhausted = [&]() {
       return continuation_iterations >= parameters.continuation_iterations;
     };
     while (gap > gap_tolerance || residual > target)
@@ -83,7 +104,7 @@ namespace ssc
         try
           {
             report.linear_iterations +=
-              elasticity.solve_newton_update(0.1 * target).iterations;
+              elasticity.solve_newton_update(forcing, 0.1 * target).iterations;
           }
         catch (const ExceptionBase &e)
           {
@@ -136,6 +157,13 @@ namespace ssc
                 trial > (1. - 1e-4 * step) * residual && trial > target)
               {
                 elasticity.restore_solution();
+                if (forcing > 0.)
+                  {
+                    // an inexact update may be what fails: solve it again,
+                    // accurately
+                    forcing = 0.;
+                    continue;
+                  }
                 // a limit or bifurcation point shows as negative curvature
                 const double curvature = elasticity.newton_update_curvature();
                 if (!continuation_exhausted())
@@ -167,6 +195,8 @@ namespace ssc
               }
           }
         ++report.iterations;
+        if (inexact)
+          forcing = eisenstat_walker(forcing, trial / residual);
         residual = trial;
         gap      = elasticity.dirichlet_gap();
         report.residuals.push_back(residual);

@@ -461,6 +461,7 @@ namespace ssc
                               fe_values,
                               cell_u,
                               body_force,
+                              with_matrix,
                               cell_matrix,
                               cell_residual))
             {
@@ -572,11 +573,13 @@ namespace ssc
 
 
   LinearSolveReport
-  VolumeElasticity::solve_newton_update(const double absolute_floor)
+  VolumeElasticity::solve_newton_update(const double forcing,
+                                        const double absolute_floor)
   {
     newton_update = 0;
     return solve_linear_system(newton_update,
                                increment_constraints,
+                               forcing,
                                absolute_floor);
   }
 
@@ -908,6 +911,7 @@ namespace ssc
     FEValues<3>                                        &fe_values,
     const Vector<double>                               &u,
     const Function<3>                                  *body_force,
+    const bool                                          with_matrix,
     FullMatrix<double>                                 &cell_matrix,
     Vector<double>                                     &cell_residual) const
   {
@@ -965,19 +969,30 @@ namespace ssc
 
     cell_matrix   = 0;
     cell_residual = 0;
-    std::vector<Tensor<1, 3>>          g(n); // spatial shape gradients
-    std::vector<Tensor<1, 3>>          g_reference(n);
-    std::vector<SymmetricTensor<2, 3>> sym_grad(n), c_sym_grad(n);
-    std::vector<Tensor<2, 3>>          A_grad(n); // A : (e_c (x) g_reference)
-    Tensor<2, 3>                       P;         // corotational
-    Tensor<4, 3>                       A;
-    std::vector<unsigned int>          component(n);
-    std::vector<double>                b(n, 0.); // int J div(phi_i)
-    SymmetricTensor<2, 3>              tau;
-    SymmetricTensor<4, 3>              c_iso;
-    Vector<double>                     force(3);
+    // The tangent couples dof i = (component c, base function alpha) and
+    // dof j = (d, beta) by g_alpha[k] T[c][k][d][l] g_beta[l] with the
+    // spatial shape gradients g and one spatial tangent T per quadrature
+    // point (material, geometric and volumetric parts), so it is assembled
+    // by blocks of base functions: W = g_alpha . T once per base function,
+    // then a dot product of 3-vectors per entry.
+    const unsigned int n_base = fe.base_element(0).n_dofs_per_cell();
+    std::vector<std::array<unsigned int, 3>> dof_of(n_base);
+    std::vector<unsigned int>                component(n);
     for (unsigned int i = 0; i < n; ++i)
-      component[i] = fe.system_to_component_index(i).first;
+      {
+        const auto [c, alpha] = fe.system_to_component_index(i);
+        component[i]          = c;
+        dof_of[alpha][c]      = i;
+      }
+    std::vector<Tensor<1, 3>> g(n_base); // spatial shape gradients
+    std::vector<Tensor<1, 3>> g_reference(n_base);
+    std::vector<Tensor<3, 3>> W(n_base);
+    std::vector<double>       b(n, 0.); // int J div(phi_i)
+    Tensor<2, 3>              P;        // corotational
+    Tensor<4, 3>              A, T;
+    SymmetricTensor<2, 3>     tau;
+    SymmetricTensor<4, 3>     c_iso;
+    Vector<double>            force(3);
     for (unsigned int q = 0; q < n_q; ++q)
       {
         const double       JxW   = fe_values.JxW(q);
@@ -1004,53 +1019,22 @@ namespace ssc
                              (1. - beta) * volumetric.pressure(J_bar) +
                              beta * volumetric.pressure(J_e) :
                              volumetric.pressure(J_e);
-        for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int alpha = 0; alpha < n_base; ++alpha)
           {
-            const unsigned int ci = component[i];
-            g_reference[i]        = fe_values.shape_grad_component(i, q, ci);
-            g[i]                  = transpose(F_inv) * g_reference[i];
-            const double div      = g[i][ci];
-            if (corotational)
-              {
-                for (unsigned int a = 0; a < 3; ++a)
-                  for (unsigned int c = 0; c < 3; ++c)
-                    A_grad[i][a][c] = A[a][c][ci] * g_reference[i];
-                cell_residual(i) += (P[ci] * g_reference[i]) * JxW;
-              }
-            else
-              {
-                Tensor<2, 3> G;
-                G[ci]         = g[i];
-                sym_grad[i]   = symmetrize(G);
-                c_sym_grad[i] = c_iso * sym_grad[i];
-                cell_residual(i) += (tau * g[i])[ci] * JxW;
-              }
-            cell_residual(i) += p * J * div * JxW;
-            b[i] += J * div * JxW;
+            g_reference[alpha] =
+              fe_values.shape_grad_component(dof_of[alpha][0], q, 0);
+            g[alpha] = transpose(F_inv) * g_reference[alpha];
           }
-        const double volumetric_point = (mean_dilatation ? beta : 1.) * J * J *
-                                        volumetric.pressure_derivative(J_e) /
-                                        gamma;
         for (unsigned int i = 0; i < n; ++i)
           {
             const unsigned int ci    = component[i];
-            const Tensor<1, 3> tau_g = tau * g[i];
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                const unsigned int cj = component[j];
-                double             value =
-                  p * J * (g[i][ci] * g[j][cj] - g[i][cj] * g[j][ci]) +
-                  volumetric_point * g[i][ci] * g[j][cj];
-                if (corotational)
-                  value += A_grad[j][ci] * g_reference[i];
-                else
-                  {
-                    value += sym_grad[i] * c_sym_grad[j];
-                    if (ci == cj)
-                      value += tau_g * g[j];
-                  }
-                cell_matrix(i, j) += value * JxW;
-              }
+            const unsigned int alpha = fe.system_to_component_index(i).second;
+            const double       div   = g[alpha][ci];
+            cell_residual(i) += (corotational ? P[ci] * g_reference[alpha] :
+                                                (tau * g[alpha])[ci]) *
+                                JxW;
+            cell_residual(i) += p * J * div * JxW;
+            b[i] += J * div * JxW;
           }
         if (body_force != nullptr)
           {
@@ -1059,8 +1043,49 @@ namespace ssc
               cell_residual(i) -=
                 fe_values.shape_value(i, q) * force(component[i]) * JxW;
           }
+        if (!with_matrix)
+          continue;
+
+        // the spatial tangent: the corotational first-Piola tangent pushed
+        // forward (g_reference = F^T g), or the neo-Hookean c_iso with the
+        // geometric part of tau
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int d = 0; d < 3; ++d)
+              for (unsigned int l = 0; l < 3; ++l)
+                if (corotational)
+                  {
+                    double value = 0;
+                    for (unsigned int m = 0; m < 3; ++m)
+                      for (unsigned int o = 0; o < 3; ++o)
+                        value += F[q][k][m] * A[c][m][d][o] * F[q][l][o];
+                    T[c][k][d][l] = value;
+                  }
+                else
+                  T[c][k][d][l] = c_iso[c][k][d][l] + (c == d ? tau[k][l] : 0.);
+        // the volumetric part: p J (div_i div_j - g_i[cj] g_j[ci]) and
+        // the point share of U''
+        const double volumetric_point = (mean_dilatation ? beta : 1.) * J * J *
+                                        volumetric.pressure_derivative(J_e) /
+                                        gamma;
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              T[c][c][d][d] += p * J + volumetric_point;
+              T[c][d][d][c] -= p * J;
+            }
+        T *= JxW;
+        for (unsigned int row = 0; row < n_base; ++row)
+          for (unsigned int c = 0; c < 3; ++c)
+            W[row][c] = g[row] * T[c]; // [d][l]
+        for (unsigned int row = 0; row < n_base; ++row)
+          for (unsigned int column = 0; column < n_base; ++column)
+            for (unsigned int c = 0; c < 3; ++c)
+              for (unsigned int d = 0; d < 3; ++d)
+                cell_matrix(dof_of[row][c], dof_of[column][d]) +=
+                  W[row][c][d] * g[column];
       }
-    if (mean_dilatation)
+    if (mean_dilatation && with_matrix)
       {
         const double k =
           (1. - beta) * volumetric.pressure_derivative(J_bar) / volume;
@@ -1069,7 +1094,8 @@ namespace ssc
             cell_matrix(i, j) += k * b[i] * b[j];
       }
     for (const CellContribution *contribution : contributions)
-      contribution->add_to_cell_nonlinear(cell, u, cell_matrix, cell_residual);
+      contribution->add_to_cell_nonlinear(
+        cell, u, with_matrix, cell_matrix, cell_residual);
     return true;
   }
 
@@ -1175,13 +1201,16 @@ namespace ssc
   VolumeElasticity::solve_linear_system(
     TrilinosWrappers::MPI::Vector   &solution,
     const AffineConstraints<double> &solution_constraints,
+    const double                     relative_tolerance,
     const double                     absolute_floor)
   {
     TimerOutput::Scope t(timer, "solve");
     setup_preconditioner();
     solution_constraints.set_zero(solution);
     const double target =
-      std::max(parameters.tolerance * system_rhs.l2_norm(), absolute_floor);
+      std::max(std::max(parameters.tolerance, relative_tolerance) *
+                 system_rhs.l2_norm(),
+               absolute_floor);
     SolverControl              control(parameters.max_iterations,
                           std::max(target, 1e-300),
                           false,
@@ -1264,7 +1293,7 @@ namespace ssc
           // r = f_int(u) - f_ext (K u - f for linear layers)
           cell->get_dof_values(locally_relevant_solution, cell_u);
           nonlinear_cell(
-            cell, fe_values, cell_u, body_force, cell_matrix, cell_r);
+            cell, fe_values, cell_u, body_force, false, cell_matrix, cell_r);
           for (unsigned int i = 0; i < n; ++i)
             force[fe.system_to_component_index(i).first] +=
               cell_r(i) * cell_w(i);

@@ -29,15 +29,17 @@ namespace ssc
                 Vector<double>                            &cell_rhs) const = 0;
 
     /**
-     * For Newton's method: adds the tangent to @p cell_matrix and the
-     * internal force minus the load to @p cell_residual, at the cell's
-     * displacement values @p cell_displacement. The default is the linear
-     * response K u - f of add_to_cell(); finite-strain contributions
+     * For Newton's method: adds the tangent to @p cell_matrix (if
+     * @p with_matrix; it may be left out when only the residual is wanted)
+     * and the internal force minus the load to @p cell_residual, at the
+     * cell's displacement values @p cell_displacement. The default is the
+     * linear response K u - f of add_to_cell(); finite-strain contributions
      * override it.
      */
     virtual void
     add_to_cell_nonlinear(const DoFHandler<3>::active_cell_iterator &cell,
                           const Vector<double> &cell_displacement,
+                          const bool            with_matrix,
                           FullMatrix<double>   &cell_matrix,
                           Vector<double>       &cell_residual) const
     {
@@ -46,7 +48,8 @@ namespace ssc
       add_to_cell(cell, K, f);
       K.vmult_add(cell_residual, cell_displacement);
       cell_residual -= f;
-      cell_matrix.add(1., K);
+      if (with_matrix)
+        cell_matrix.add(1., K);
     }
   };
 } // namespace ssc

@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace ssc
@@ -76,6 +77,7 @@ namespace ssc
     void
     add_to_cell_nonlinear(const DoFHandler<3>::active_cell_iterator &cell,
                           const Vector<double>                      &u,
+                          const bool          with_matrix,
                           FullMatrix<double> &cell_matrix,
                           Vector<double>     &cell_residual) const override;
 
@@ -144,6 +146,11 @@ namespace ssc
     membrane_state(const Tensor<2, 3> &E,
                    const Tensor<2, 3> &P,
                    const LocalPoint   &point) const;
+
+    /// Two orthonormal vectors of the plane normal to the unit vector
+    /// @p normal.
+    static std::pair<Tensor<1, 3>, Tensor<1, 3>>
+    tangent_basis(const Tensor<1, 3> &normal);
 
     /// FEValues with the cell's embedded points (reference gradients).
     std::unique_ptr<FEValues<3>>

@@ -7,6 +7,13 @@ namespace ssc
 {
   using namespace dealii;
 
+  /// How accurately each Newton update is solved.
+  enum class ForcingTerm
+  {
+    fixed,           ///< to Elasticity/Linear solver/Tolerance every time
+    eisenstat_walker ///< inexact Newton: loose far from the solution
+  };
+
   /// Newton's method and the adaptive load stepping around it (section
   /// "Nonlinear solver").
   struct NewtonParameters
@@ -22,6 +29,8 @@ namespace ssc
     unsigned int easy_iterations         = 4;
     unsigned int continuation_iterations = 100;
     double       continuation_shift      = 0.1;
+    ForcingTerm  forcing_term            = ForcingTerm::eisenstat_walker;
+    double       max_forcing_term        = 1e-2;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -76,6 +76,12 @@ namespace ssc
              &apply_load);
 
   private:
+    /// The next forcing term (relative accuracy of the next update) from
+    /// the last one and the ratio of the last two residual norms.
+    double
+    eisenstat_walker(const double previous_forcing,
+                     const double residual_ratio) const;
+
     VolumeElasticity       &elasticity;
     const NewtonParameters &parameters;
     ConditionalOStream     &pcout;

@@ -213,13 +213,15 @@ namespace ssc
                         &nodal_forces = {},
       const Function<3> *body_force   = nullptr);
 
-    /// Solves K du = -r (CG + AMG, homogeneous constraints) to the linear
-    /// solver's relative tolerance, but not below @p absolute_floor (N):
-    /// near a converged state the relative target can fall below what
-    /// round-off lets CG reach, while Newton only needs the update to be
-    /// well inside its own tolerance.
+    /// Solves K du = -r (CG + AMG, homogeneous constraints) to the relative
+    /// tolerance @p forcing (an inexact Newton method's forcing term) or the
+    /// linear solver's, whichever is larger, but not below
+    /// @p absolute_floor (N): near a converged state the relative target
+    /// can fall below what round-off lets CG reach, while Newton only needs
+    /// the update to be well inside its own tolerance.
     LinearSolveReport
-    solve_newton_update(const double absolute_floor = 0.);
+    solve_newton_update(const double forcing        = 0.,
+                        const double absolute_floor = 0.);
 
     /// Adds @p shift times its own diagonal to the tangent (free rows):
     /// K + shift D is positive definite for a large enough shift where K
@@ -325,17 +327,19 @@ namespace ssc
 
   private:
     /**
-     * The one nonlinear cell routine: tangent and residual f_int - f_ext at
-     * the cell's displacement values @p u (linear layers: K u - f from
-     * assemble_cell(); neo-Hookean layers: finite strain, with the mean
-     * dilatation in the mixed formulation). Returns false if det F <= 0 at
-     * a quadrature point.
+     * The one nonlinear cell routine: tangent (if @p with_matrix; linear
+     * layers always) and residual f_int - f_ext at the cell's displacement
+     * values @p u (linear layers: K u - f from assemble_cell(); neo-Hookean
+     * and corotational layers: finite strain, with the mean dilatation in
+     * the mixed formulation). Returns false if det F <= 0 at a quadrature
+     * point.
      */
     bool
     nonlinear_cell(const typename DoFHandler<3>::active_cell_iterator &cell,
                    FEValues<3>          &fe_values,
                    const Vector<double> &u,
                    const Function<3>    *body_force,
+                   const bool            with_matrix,
                    FullMatrix<double>   &cell_matrix,
                    Vector<double>       &cell_residual) const;
 
@@ -351,12 +355,14 @@ namespace ssc
     setup_preconditioner();
 
     /// CG + AMG for the current system_matrix and system_rhs into
-    /// @p solution (a warm start), to the relative tolerance but not below
-    /// @p absolute_floor, then the constraints applied.
+    /// @p solution (a warm start), to @p relative_tolerance (at least the
+    /// linear solver's) but not below @p absolute_floor, then the
+    /// constraints applied.
     LinearSolveReport
     solve_linear_system(TrilinosWrappers::MPI::Vector   &solution,
                         const AffineConstraints<double> &solution_constraints,
-                        const double                     absolute_floor = 0.);
+                        const double relative_tolerance = 0.,
+                        const double absolute_floor     = 0.);
 
     BackgroundMesh             &mesh;
     const LayerStack           &layers;
