@@ -21,15 +21,19 @@ namespace ssc
                       "1e-12",
                       Patterns::Double(0),
                       "... or is below this value (N).");
-    prm.declare_entry("Line search",
-                      "true",
-                      Patterns::Bool(),
-                      "Backtracking line search on the residual norm (also "
-                      "backs off from inverted cells).");
+    prm.declare_entry(
+      "Line search",
+      "energy",
+      Patterns::Selection("energy|residual|none"),
+      "How long a Newton step is. energy: near the minimum of the energy "
+      "along the update, found from its slope r.du (regula falsi; every "
+      "law, the loads and the contact are conservative); residual: "
+      "halved until the residual norm decreases; none: the whole step. "
+      "Both searches back off from inverted cells.");
     prm.declare_entry("Max line search steps",
                       "8",
                       Patterns::Integer(1, 50),
-                      "Halvings of the Newton step before giving up.");
+                      "Trial steps of the line search before it gives up.");
     prm.declare_entry("Initial steps",
                       "4",
                       Patterns::Integer(1, 10000),
@@ -93,21 +97,24 @@ namespace ssc
   NewtonParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Nonlinear solver");
-    max_iterations          = prm.get_integer("Max iterations");
-    relative_tolerance      = prm.get_double("Relative tolerance");
-    absolute_tolerance      = prm.get_double("Absolute tolerance");
-    line_search             = prm.get_bool("Line search");
-    max_line_search         = prm.get_integer("Max line search steps");
-    initial_steps           = prm.get_integer("Initial steps");
-    minimum_increment       = prm.get_double("Minimum increment");
-    growth_factor           = prm.get_double("Growth factor");
-    easy_iterations         = prm.get_integer("Easy iterations");
-    continuation_iterations = prm.get_integer("Continuation iterations");
-    continuation_shift      = prm.get_double("Continuation shift");
-    forcing_term            = prm.get("Forcing term") == "fixed" ?
-                                ForcingTerm::fixed :
-                                ForcingTerm::eisenstat_walker;
-    max_forcing_term        = prm.get_double("Max forcing term");
+    max_iterations           = prm.get_integer("Max iterations");
+    relative_tolerance       = prm.get_double("Relative tolerance");
+    absolute_tolerance       = prm.get_double("Absolute tolerance");
+    const std::string search = prm.get("Line search");
+    line_search              = search == "energy"   ? LineSearch::energy :
+                               search == "residual" ? LineSearch::residual :
+                                                      LineSearch::none;
+    max_line_search          = prm.get_integer("Max line search steps");
+    initial_steps            = prm.get_integer("Initial steps");
+    minimum_increment        = prm.get_double("Minimum increment");
+    growth_factor            = prm.get_double("Growth factor");
+    easy_iterations          = prm.get_integer("Easy iterations");
+    continuation_iterations  = prm.get_integer("Continuation iterations");
+    continuation_shift       = prm.get_double("Continuation shift");
+    forcing_term             = prm.get("Forcing term") == "fixed" ?
+                                 ForcingTerm::fixed :
+                                 ForcingTerm::eisenstat_walker;
+    max_forcing_term         = prm.get_double("Max forcing term");
     AssertThrow(continuation_iterations == 0 || continuation_shift > 0,
                 ExcMessage("Nonlinear solver/Continuation shift must be "
                            "positive when Continuation iterations is not 0."));

@@ -3,6 +3,7 @@
 
 #include <ssc/mechanics/newton_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -22,6 +23,83 @@ namespace ssc
     if (safeguard > 0.1)
       forcing = std::max(forcing, safeguard);
     return std::min(forcing, parameters.max_forcing_term);
+  }
+
+
+  NewtonSolver::LineSearchResult
+  NewtonSolver::residual_line_search(
+    const double                                                   residual,
+    const double                                                   target,
+    const std::vector<std::pair<types::global_dof_index, double>> &nodal_forces)
+  {
+    // backtracking until the residual norm decreases (Armijo)
+    double step = 1., trial = 0.;
+    for (unsigned int k = 0; k < parameters.max_line_search; ++k, step *= 0.5)
+      {
+        elasticity.set_solution_from_stored(step);
+        trial = elasticity.assemble_newton_system(false, nodal_forces);
+        if (trial <= (1. - 1e-4 * step) * residual || trial <= target)
+          return {true, step, trial};
+      }
+    return {false, 2. * step, trial};
+  }
+
+
+  NewtonSolver::LineSearchResult
+  NewtonSolver::energy_line_search(
+    const double                                                   target,
+    const std::vector<std::pair<types::global_dof_index, double>> &nodal_forces)
+  {
+    // The energy along the update, phi(s) = Pi(u + s du), has the slope
+    // phi'(s) = r(u + s du).du; Newton's direction descends where
+    // phi'(0) = -du.K du < 0. Look for a step where the slope has shrunk
+    // to half of phi'(0) in magnitude (near the minimum along the line):
+    // the whole step if the energy still falls there, else regula falsi
+    // in the bracket, backing off from inverted cells.
+    const double slope_0 = elasticity.residual_along_update();
+    if (!(slope_0 < 0.))
+      return {false, 1., 0.};
+    double low = 0., slope_low = slope_0, high = 1., slope_high = 0.;
+    bool   bracketed = false; // a step with phi' > 0 is known
+    double step = 1., trial = 0.;
+    for (unsigned int k = 0; k < parameters.max_line_search; ++k)
+      {
+        elasticity.set_solution_from_stored(step);
+        trial = elasticity.assemble_newton_system(false, nodal_forces);
+        if (!std::isfinite(trial))
+          {
+            high      = step;
+            bracketed = false;
+            step      = 0.5 * (low + high);
+            continue;
+          }
+        const double slope = elasticity.residual_along_update();
+        if (trial <= target || std::abs(slope) <= 0.5 * std::abs(slope_0) ||
+            (slope < 0. && step == 1.))
+          return {true, step, trial};
+        if (slope < 0.)
+          {
+            low       = step;
+            slope_low = slope;
+          }
+        else
+          {
+            high       = step;
+            slope_high = slope;
+            bracketed  = true;
+          }
+        const double width = high - low;
+        step               = bracketed ?
+                               std::clamp(low - slope_low * width / (slope_high - slope_low),
+                            low + 0.1 * width,
+                            high - 0.1 * width) :
+                               0.5 * (low + high);
+      }
+    if (low == 0.)
+      return {false, step, trial};
+    // the last step where the energy was still falling
+    elasticity.set_solution_from_stored(low);
+    return {true, low, elasticity.assemble_newton_system(false, nodal_forces)};
   }
 
 
@@ -103,8 +181,22 @@ namespace ssc
           elasticity.shift_tangent(shift);
         try
           {
-            report.linear_iterations +=
-              elasticity.solve_newton_update(forcing, 0.1 * target).iterations;
+            // an update CG could not bring to its target is still an
+            // inexact Newton step if it reached the largest forcing term
+            const LinearSolveReport linear =
+              elasticity.solve_newton_update(forcing,
+                                             0.1 * target,
+                                             inexact ?
+                                               parameters.max_forcing_term :
+                                               0.);
+            report.linear_iterations += linear.iterations;
+            if (!linear.reached_target && verbose)
+              pcout << "    (CG stopped at its iteration limit, relative "
+                       "residual "
+                    << std::setprecision(3)
+                    << linear.final_residual /
+                         elasticity.get_system_rhs().l2_norm()
+                    << ")" << std::endl;
           }
         catch (const ExceptionBase &e)
           {
@@ -141,20 +233,21 @@ namespace ssc
           {
             ++newton_iterations;
             // A step that reaches the prescribed displacements is taken
-            // whole; otherwise backtrack until the residual decreases.
-            for (unsigned int k = 0;; ++k)
+            // whole; otherwise the line search chooses it.
+            LineSearchResult search{true, 1., 0.};
+            if (closing || parameters.line_search == LineSearch::none)
               {
-                elasticity.set_solution_from_stored(step);
-                trial = elasticity.assemble_newton_system(false, nodal_forces);
-                if (closing || !parameters.line_search ||
-                    trial <= (1. - 1e-4 * step) * residual || trial <= target)
-                  break;
-                if (k + 1 == parameters.max_line_search)
-                  break;
-                step *= 0.5;
+                elasticity.set_solution_from_stored(1.);
+                search.residual =
+                  elasticity.assemble_newton_system(false, nodal_forces);
               }
-            if (!closing && parameters.line_search &&
-                trial > (1. - 1e-4 * step) * residual && trial > target)
+            else
+              search = parameters.line_search == LineSearch::energy ?
+                         energy_line_search(target, nodal_forces) :
+                         residual_line_search(residual, target, nodal_forces);
+            step  = search.step;
+            trial = search.residual;
+            if (!search.accepted)
               {
                 elasticity.restore_solution();
                 if (forcing > 0.)
@@ -181,7 +274,9 @@ namespace ssc
                   }
                 report.failure =
                   std::isfinite(trial) ?
-                    "the line search found no decrease of the residual" :
+                    (parameters.line_search == LineSearch::energy ?
+                       "the line search found no decrease of the energy" :
+                       "the line search found no decrease of the residual") :
                     "every step of the line search inverts cells";
                 if (curvature < 0)
                   {

@@ -7,6 +7,14 @@ namespace ssc
 {
   using namespace dealii;
 
+  /// How Newton's method chooses the length of its step.
+  enum class LineSearch
+  {
+    none,     ///< the whole step
+    residual, ///< backtracking until the residual norm decreases
+    energy    ///< near the minimum of the energy along the update
+  };
+
   /// How accurately each Newton update is solved.
   enum class ForcingTerm
   {
@@ -21,7 +29,7 @@ namespace ssc
     unsigned int max_iterations          = 25;
     double       relative_tolerance      = 1e-8;
     double       absolute_tolerance      = 1e-12;
-    bool         line_search             = true;
+    LineSearch   line_search             = LineSearch::energy;
     unsigned int max_line_search         = 8;
     unsigned int initial_steps           = 4;
     double       minimum_increment       = 1e-4;

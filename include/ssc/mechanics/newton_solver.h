@@ -34,8 +34,10 @@ namespace ssc
   };
 
   /**
-   * Newton's method with backtracking line search on the residual norm for
-   * the volume elasticity (and what is attached to it): the load is applied
+   * Newton's method with a line search (on the energy along the update, or
+   * backtracking on the residual norm) for the volume elasticity (and what
+   * is attached to it), inexact (Eisenstat-Walker) by default: the load is
+   * applied
    * by the caller (prescribed values, point loads); iterations stop when
    * the residual has dropped by the relative tolerance from its value at
    * the start of the solve, or below the absolute tolerance. Inverted cells
@@ -76,6 +78,32 @@ namespace ssc
              &apply_load);
 
   private:
+    /// What a line search found: whether a step is accepted, the step and
+    /// the residual norm there (the solution is left at that step).
+    struct LineSearchResult
+    {
+      bool   accepted;
+      double step;
+      double residual;
+    };
+
+    /// Backtracking (halving) until the residual norm decreases.
+    LineSearchResult
+    residual_line_search(
+      const double residual,
+      const double target,
+      const std::vector<std::pair<types::global_dof_index, double>>
+        &nodal_forces);
+
+    /// A step near the minimum of the energy along the update, from the
+    /// slope r.du alone (the loads, contact and embedded laws are
+    /// conservative); not accepted if the update does not descend.
+    LineSearchResult
+    energy_line_search(
+      const double target,
+      const std::vector<std::pair<types::global_dof_index, double>>
+        &nodal_forces);
+
     /// The next forcing term (relative accuracy of the next update) from
     /// the last one and the ratio of the last two residual norms.
     double

@@ -72,6 +72,9 @@ namespace ssc
   {
     unsigned int iterations     = 0;
     double       final_residual = 0;
+    /// false if CG stopped at its iteration limit with a residual that was
+    /// still acceptable (see solve_newton_update())
+    bool reached_target = true;
   };
 
   /**
@@ -218,10 +221,14 @@ namespace ssc
     /// linear solver's, whichever is larger, but not below
     /// @p absolute_floor (N): near a converged state the relative target
     /// can fall below what round-off lets CG reach, while Newton only needs
-    /// the update to be well inside its own tolerance.
+    /// the update to be well inside its own tolerance. If CG reaches its
+    /// iteration limit with the residual below @p acceptable times the
+    /// right-hand side, the update is kept (it is still an inexact Newton
+    /// step) instead of failing.
     LinearSolveReport
     solve_newton_update(const double forcing        = 0.,
-                        const double absolute_floor = 0.);
+                        const double absolute_floor = 0.,
+                        const double acceptable     = 0.);
 
     /// Adds @p shift times its own diagonal to the tangent (free rows):
     /// K + shift D is positive definite for a large enough shift where K
@@ -235,6 +242,12 @@ namespace ssc
     /// limit of the discrete problem.
     double
     newton_update_curvature() const;
+
+    /// r . du for the last update du and the residual r of the last
+    /// assembly: the slope of the energy along du (the loads are
+    /// conservative), negative where du descends.
+    double
+    residual_along_update() const;
 
     /// Remembers the current solution as the start of a line search.
     void
@@ -357,12 +370,14 @@ namespace ssc
     /// CG + AMG for the current system_matrix and system_rhs into
     /// @p solution (a warm start), to @p relative_tolerance (at least the
     /// linear solver's) but not below @p absolute_floor, then the
-    /// constraints applied.
+    /// constraints applied; at the iteration limit an error unless the
+    /// residual is below @p acceptable times the right-hand side.
     LinearSolveReport
     solve_linear_system(TrilinosWrappers::MPI::Vector   &solution,
                         const AffineConstraints<double> &solution_constraints,
                         const double relative_tolerance = 0.,
-                        const double absolute_floor     = 0.);
+                        const double absolute_floor     = 0.,
+                        const double acceptable         = 0.);
 
     BackgroundMesh             &mesh;
     const LayerStack           &layers;
