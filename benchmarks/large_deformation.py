@@ -25,18 +25,24 @@ this mesh (and where the displacement formulation crawls as well under
 displacement control; benchmarks/README.md).
 
 --degree 2 runs Q2 elements (large_deformation_q2.csv and .png; with the
-mixed formulation the inf-sup stable Q2-P1disc pair); use it with
---refinements 0 (257k DoFs). There the corotational bonded run passes the
-depth of about 11.2 mm at which the Q1 mixed runs stop and reaches 1.8 N
-at 13.46 mm (benchmarks/README.md); the whole table takes hours.
+mixed formulation Q2 with the mean dilatation, Q2-P0, which is inf-sup
+stable); use it with --refinements 0 (257k DoFs). There the runs pass the
+depth of about 11.2 mm at which the Q1 mixed runs stop (benchmarks/README.md).
+
+--laws and --contacts run a subset; its rows replace those of the same law
+and contact in the CSV, the others stay. --ranks sets the MPI ranks (2).
+The runs' folders, with their log.txt, stay in output/large_deformation*/
+(SSC_BUILD_DIR chooses the build, as for ssc.sh).
 
     /usr/bin/python3 benchmarks/large_deformation.py [--refinements N]
-        [--formulation mixed|displacement] [--degree 1|2] [--plot-only]
+        [--formulation mixed|displacement] [--degree 1|2] [--ranks N]
+        [--laws LAW ...] [--contacts CONTACT ...] [--plot-only]
 """
-import argparse, csv, os, re, subprocess, tempfile, time
+import argparse, csv, os, re, subprocess, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SSC = os.path.join(ROOT, "build", "bin", "ssc")
+SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
+                   "bin", "ssc")
 PRM = os.path.join(ROOT, "prm", "forearm_indentation.prm")
 OUT = os.path.join(ROOT, "benchmarks", "results")
 LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
@@ -47,7 +53,7 @@ FIELDS = ["law", "contact", "dofs", "step", "force_N", "depth_mm",
           "wall_time_s", "total_wall_time_s", "status"]
 
 
-def run(law, contact, refinements, formulation, degree, folder):
+def run(law, contact, refinements, formulation, degree, ranks, folder):
     name = f"{law}_{contact}".replace("-", "_")
     overrides = {
         "Run/Output directory": folder, "Run/Name": name,
@@ -61,7 +67,7 @@ def run(law, contact, refinements, formulation, degree, folder):
         overrides["Embedded/Septa/Tension field"] = "true"
         overrides["Embedded/Ligaments/Tension only"] = "true"
         overrides["Punch/Edge contact"] = "true"
-    args = ["mpirun", "-np", "2", SSC, PRM]
+    args = ["mpirun", "-np", str(ranks), SSC, PRM]
     for key, value in overrides.items():
         args += ["-s", f"{key}={value}"]
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
@@ -70,7 +76,7 @@ def run(law, contact, refinements, formulation, degree, folder):
     # a guard against a hang, not a limit on a slow run: a Q2 run takes
     # about an hour on this machine
     result = subprocess.run(args, capture_output=True, text=True, env=env,
-                            timeout=3600 * degree**2)
+                            timeout=3600 * degree**2 * 2 // ranks)
     total = time.time() - start
     if result.returncode != 0:
         lines = [l for l in result.stderr.splitlines() if "error" in l]
@@ -165,29 +171,43 @@ def main():
     parser.add_argument("--formulation", choices=["mixed", "displacement"],
                         default="mixed")
     parser.add_argument("--degree", type=int, choices=[1, 2], default=1)
+    parser.add_argument("--ranks", type=int, default=2)
+    parser.add_argument("--laws", nargs="+", choices=LAWS, default=LAWS)
+    parser.add_argument("--contacts", nargs="+", choices=CONTACTS,
+                        default=CONTACTS)
     parser.add_argument("--plot-only", action="store_true")
     args = parser.parse_args()
-    refinements, formulation, degree = (args.refinements, args.formulation,
-                                        args.degree)
-    os.makedirs(OUT, exist_ok=True)
     stem = ("large_deformation" +
-            ("" if formulation == "mixed" else "_" + formulation) +
-            ("" if degree == 1 else f"_q{degree}"))
+            ("" if args.formulation == "mixed" else "_" + args.formulation) +
+            ("" if args.degree == 1 else f"_q{args.degree}"))
     csv_path = os.path.join(OUT, stem + ".csv")
+    os.makedirs(OUT, exist_ok=True)
     if not args.plot_only:
-        rows = []
-        with tempfile.TemporaryDirectory() as folder:
-            for contact in CONTACTS:
-                for law in LAWS:
-                    rows += run(law, contact, refinements, formulation,
-                                degree, folder)
+        folder = os.path.join(ROOT, "output", stem)
+        os.makedirs(folder, exist_ok=True)
+        new_rows = {}
+        for contact in args.contacts:
+            for law in args.laws:
+                new_rows[(law, contact)] = run(law, contact, args.refinements,
+                                               args.formulation, args.degree,
+                                               args.ranks, folder)
+        # read only now: another subset may have been run meanwhile
+        rows = {}
+        if os.path.exists(csv_path):
+            with open(csv_path) as f:
+                for r in csv.DictReader(f):
+                    rows.setdefault((r["law"], r["contact"]), []).append(r)
+        rows.update(new_rows)
         with open(csv_path, "w", newline="") as f:
             writer = csv.DictWriter(f, fieldnames=FIELDS)
             writer.writeheader()
-            writer.writerows(rows)
+            for contact in CONTACTS:
+                for law in LAWS:
+                    writer.writerows(rows.get((law, contact), []))
     with open(csv_path) as f:
         rows = list(csv.DictReader(f))
-    plot(rows, os.path.join(OUT, stem + ".png"), formulation, degree)
+    plot(rows, os.path.join(OUT, stem + ".png"), args.formulation,
+         args.degree)
 
 
 if __name__ == "__main__":
