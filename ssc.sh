@@ -48,6 +48,9 @@ build() {
 # mpirun refuses root unless told; CI runs as root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
+# mpirun binds each job's ranks to the first cores, so two jobs at once
+# (ctest -j, benchmarks side by side) would share one core: do not bind
+export OMPI_MCA_hwloc_base_binding_policy=none
 
 case "${1:-run}" in
   build)

@@ -78,7 +78,10 @@ def run(overrides, folder, name, ranks=1):
     for key, value in {**BASE, **overrides}.items():
         args += ["-s", f"{key}={value}"]
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               # mpirun binds each job's ranks to the first cores: two
+               # jobs at once would share one core
+               OMPI_MCA_hwloc_base_binding_policy="none")
     subprocess.run(args, check=True, capture_output=True, env=env,
                    timeout=1800)
     with open(os.path.join(folder, name, "summary.json")) as f:

@@ -71,7 +71,10 @@ def run(law, contact, refinements, formulation, degree, ranks, folder):
     for key, value in overrides.items():
         args += ["-s", f"{key}={value}"]
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               # mpirun binds each job's ranks to the first cores: two
+               # jobs at once would share one core
+               OMPI_MCA_hwloc_base_binding_policy="none")
     start = time.time()
     # a guard against a hang, not a limit on a slow run: a Q2 run takes
     # about an hour on this machine

@@ -45,7 +45,10 @@ def run(scene, ranks):
     if ranks > 1:
         command = ["mpirun", "-np", str(ranks)] + command
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               # mpirun binds each job's ranks to the first cores: two
+               # jobs at once would share one core
+               OMPI_MCA_hwloc_base_binding_policy="none")
     start = time.time()
     result = subprocess.run(command, capture_output=True, text=True, env=env)
     print(f"{scene}: exit status {result.returncode} after "
