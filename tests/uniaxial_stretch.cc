@@ -147,11 +147,11 @@ main(int argc, char **argv)
               for (const double r : report.last_residuals)
                 if (r > 1e-15)
                   above.push_back(r);
-              const unsigned int k = above.size();
-              const double       order =
-                k < 3 ? 0. :
-                        std::log(above[k - 1] / above[k - 2]) /
-                          std::log(above[k - 2] / above[k - 3]);
+              const unsigned int k     = above.size();
+              const double       order = k < 3 ?
+                                           0. :
+                                           std::log(above[k - 1] / above[k - 2]) /
+                                       std::log(above[k - 2] / above[k - 3]);
               deallog << "  order of convergence at least 1.8 (quadratic): "
                       << (order >= 1.8 ? "yes" : "no") << std::endl;
             }

@@ -88,12 +88,17 @@ namespace ssc
             slope_high = slope;
             bracketed  = true;
           }
+        // regula falsi inside the bracket, kept off its ends; halving
+        // towards inverted cells
         const double width = high - low;
-        step               = bracketed ?
-                               std::clamp(low - slope_low * width / (slope_high - slope_low),
-                            low + 0.1 * width,
-                            high - 0.1 * width) :
-                               0.5 * (low + high);
+        if (bracketed)
+          {
+            const double secant =
+              low - slope_low * width / (slope_high - slope_low);
+            step = std::clamp(secant, low + 0.1 * width, high - 0.1 * width);
+          }
+        else
+          step = 0.5 * (low + high);
       }
     if (low == 0.)
       return {false, step, trial};
