@@ -214,7 +214,33 @@ namespace ssc
         elasticity.store_solution();
         const bool closing = gap > gap_tolerance;
         double     step = 1., trial = 0.;
-        if (shift > 0)
+        if (shift > 0 && parameters.line_search == LineSearch::energy)
+          {
+            // Continuation on the energy (Levenberg-Marquardt): for a large
+            // enough shift the shifted tangent is positive definite and its
+            // update descends; the line search takes a step along it. A
+            // whole step halves the shift, a shortened one doubles it, no
+            // descent multiplies it by ten; Newton's method takes over
+            // again once the residual has dropped tenfold or the shift has
+            // become small.
+            ++continuation_iterations;
+            const LineSearchResult search =
+              energy_line_search(target, nodal_forces);
+            if (!search.accepted)
+              {
+                elasticity.restore_solution();
+                shift *= 10.;
+                continue;
+              }
+            step  = search.step;
+            trial = search.residual;
+            shift *= step == 1. ? 0.5 : 2.;
+            last_shift = shift;
+            if (trial < 0.1 * continuation_start ||
+                shift < 1e-3 * parameters.continuation_shift)
+              shift = 0.;
+          }
+        else if (shift > 0)
           {
             // Pseudo-transient continuation: the whole step of the shifted
             // tangent, unless it inverts cells; the shift follows the
