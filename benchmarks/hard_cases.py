@@ -9,12 +9,14 @@ core.
 
 Writes benchmarks/results/hard_cases.csv and prints a Markdown table.
 
-    /usr/bin/python3 benchmarks/hard_cases.py [--jobs N]
+    /usr/bin/python3 benchmarks/hard_cases.py [--jobs N] [--cases I ...]
 
 (--jobs 2 runs two cases at a time on the 2 cores: their wall times then
-include the sharing. SSC_BUILD_DIR chooses the build, as for ssc.sh.)
+include the sharing. --cases runs the cases of these indices (from 0, in
+the order of CASES) and replaces their rows in the CSV, the others stay.
+SSC_BUILD_DIR chooses the build, as for ssc.sh.)
 """
-import concurrent.futures, csv, json, os, subprocess, sys, tempfile, time
+import argparse, concurrent.futures, csv, json, os, subprocess, tempfile, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
@@ -103,18 +105,35 @@ def run(label, overrides, folder, index):
     return row
 
 
+def merged_rows(new_rows):
+    """The CSV's rows in the order of CASES: the new ones, and the old ones
+    of the cases not run now."""
+    path = os.path.join(OUT, "hard_cases.csv")
+    by_case = {}
+    if os.path.exists(path):
+        with open(path, newline="") as f:
+            by_case = {r["case"]: r for r in csv.DictReader(f)}
+    by_case.update({r["case"]: r for r in new_rows})
+    return [by_case[label] for label, _ in CASES if label in by_case]
+
+
 def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--jobs", type=int, default=1)
+    parser.add_argument("--cases", type=int, nargs="+",
+                        choices=range(len(CASES)),
+                        default=list(range(len(CASES))))
+    args = parser.parse_args()
     os.makedirs(OUT, exist_ok=True)
-    jobs = int(sys.argv[sys.argv.index("--jobs") + 1]) \
-        if "--jobs" in sys.argv else 1
     with tempfile.TemporaryDirectory() as folder:
-        with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
-            futures = [pool.submit(run, label, overrides, folder, index)
-                       for index, (label, overrides) in enumerate(CASES)]
-            rows = []
+        with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+            futures = [pool.submit(run, *CASES[index], folder, index)
+                       for index in args.cases]
+            new_rows = []
             for future in futures:
-                rows.append(future.result())
-                print(rows[-1], flush=True)
+                new_rows.append(future.result())
+                print(new_rows[-1], flush=True)
+    rows = merged_rows(new_rows)
     with open(os.path.join(OUT, "hard_cases.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=FIELDS)
         writer.writeheader()
