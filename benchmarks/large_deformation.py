@@ -7,7 +7,8 @@ Every law uses the Q1 mixed formulation by default (mean dilatation at
 finite strain; the enhanced modes of the scene's default are for the
 linear law only) on the scene's mesh with fewer refinements towards the
 punch edge (Mesh/Region of interest/Local refinements, default 1: 59k
-DoFs, as in prm/forearm_indentation_finite_strain.prm). The finite-strain
+DoFs; prm/forearm_indentation_finite_strain.prm is the --degree 2
+--refinements 0 set-up). The finite-strain
 runs use tension-field septa and tension-only ligaments
 (Embedded/Septa/Tension field, Embedded/Ligaments/Tension only):
 compressed septa wrinkle and compressed ligaments go slack; and the skin
