@@ -45,6 +45,13 @@ namespace ssc
                       "Smallest increment, as a fraction of the way to the "
                       "current target, before the solve is given up with an "
                       "error.");
+    prm.declare_entry("Max increments",
+                      "200",
+                      Patterns::Integer(1),
+                      "Increments, converged or cut, per load step before "
+                      "the solve is given up with an error: a solve that "
+                      "crawls in tiny increments stops instead of running "
+                      "for hours. At least Initial steps.");
     prm.declare_entry("Growth factor",
                       "1.5",
                       Patterns::Double(1, 10),
@@ -107,6 +114,7 @@ namespace ssc
     max_line_search          = prm.get_integer("Max line search steps");
     initial_steps            = prm.get_integer("Initial steps");
     minimum_increment        = prm.get_double("Minimum increment");
+    max_increments           = prm.get_integer("Max increments");
     growth_factor            = prm.get_double("Growth factor");
     easy_iterations          = prm.get_integer("Easy iterations");
     continuation_iterations  = prm.get_integer("Continuation iterations");
@@ -118,6 +126,11 @@ namespace ssc
     AssertThrow(continuation_iterations == 0 || continuation_shift > 0,
                 ExcMessage("Nonlinear solver/Continuation shift must be "
                            "positive when Continuation iterations is not 0."));
+    AssertThrow(max_increments >= initial_steps,
+                ExcMessage("Nonlinear solver/Max increments (" +
+                           std::to_string(max_increments) +
+                           ") must be at least Initial steps (" +
+                           std::to_string(initial_steps) + ")."));
     prm.leave_subsection();
   }
 } // namespace ssc

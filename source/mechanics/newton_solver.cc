@@ -363,8 +363,18 @@ namespace ssc
     const double   path     = to - from;
     double         position = from;
     increment               = std::min(increment, path);
+    unsigned int increments = 0;
     while (position < to - 1e-12 * std::abs(path))
       {
+        AssertThrow(increments < parameters.max_increments,
+                    ExcMessage("Newton's method: the load step from " +
+                               std::to_string(from) + " to " +
+                               std::to_string(to) + " has reached only " +
+                               std::to_string(position) + " after " +
+                               std::to_string(increments) +
+                               " increments (Nonlinear solver/Max "
+                               "increments): the solve crawls."));
+        ++increments;
         const double       next         = std::min(position + increment, to);
         const auto         start        = elasticity.get_solution();
         const auto         nodal_forces = apply_load(next);

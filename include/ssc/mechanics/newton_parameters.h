@@ -33,6 +33,7 @@ namespace ssc
     unsigned int max_line_search         = 8;
     unsigned int initial_steps           = 4;
     double       minimum_increment       = 1e-4;
+    unsigned int max_increments          = 200;
     double       growth_factor           = 1.5;
     unsigned int easy_iterations         = 4;
     unsigned int continuation_iterations = 100;

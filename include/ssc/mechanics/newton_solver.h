@@ -65,7 +65,9 @@ namespace ssc
      * adapt: a failed Newton solve restores the last converged state and
      * halves the increment (an error once it falls below the minimum
      * fraction of the whole path), easy steps (at most easy_iterations
-     * Newton iterations) let it grow by the growth factor. @p apply_load
+     * Newton iterations) let it grow by the growth factor; more than
+     * max_increments increments (converged or cut) are an error too, so
+     * that a solve crawling in tiny increments stops. @p apply_load
      * sets the load for a parameter value and returns the point loads.
      * @p increment is the first increment and returns the last accepted one.
      */
