@@ -214,18 +214,31 @@ namespace ssc
         elasticity.store_solution();
         const bool closing = gap > gap_tolerance;
         double     step = 1., trial = 0.;
-        if (shift > 0 && parameters.line_search == LineSearch::energy)
+        if (shift > 0)
           {
-            // Continuation on the energy (Levenberg-Marquardt): for a large
-            // enough shift the shifted tangent is positive definite and its
-            // update descends; the line search takes a step along it. A
-            // whole step halves the shift, a shortened one doubles it, no
-            // descent multiplies it by ten; Newton's method takes over
-            // again once the residual has dropped tenfold or the shift has
-            // become small.
+            // Continuation with the shifted tangent K + shift D, which is
+            // positive definite for a large enough shift where K is not. On
+            // the energy (Levenberg-Marquardt): the line search takes a
+            // step along the (descending) update; a whole step halves the
+            // shift, a shortened one doubles it. Otherwise pseudo-transient
+            // continuation: the whole step, the shift following the
+            // residual (switched evolution relaxation). Either way, no
+            // descent (or inverted cells) multiplies the shift by ten, and
+            // Newton's method takes over again once the residual has
+            // dropped tenfold (on the energy also once the shift has
+            // become small).
+            const bool on_energy = parameters.line_search == LineSearch::energy;
             ++continuation_iterations;
-            const LineSearchResult search =
-              energy_line_search(target, nodal_forces);
+            LineSearchResult search{true, 1., 0.};
+            if (on_energy)
+              search = energy_line_search(target, nodal_forces);
+            else
+              {
+                elasticity.set_solution_from_stored(1.);
+                search.residual =
+                  elasticity.assemble_newton_system(false, nodal_forces);
+                search.accepted = std::isfinite(search.residual);
+              }
             if (!search.accepted)
               {
                 elasticity.restore_solution();
@@ -234,30 +247,10 @@ namespace ssc
               }
             step  = search.step;
             trial = search.residual;
-            shift *= step == 1. ? 0.5 : 2.;
+            shift *= on_energy ? (step == 1. ? 0.5 : 2.) : trial / residual;
             last_shift = shift;
             if (trial < 0.1 * continuation_start ||
-                shift < 1e-3 * parameters.continuation_shift)
-              shift = 0.;
-          }
-        else if (shift > 0)
-          {
-            // Pseudo-transient continuation: the whole step of the shifted
-            // tangent, unless it inverts cells; the shift follows the
-            // residual (switched evolution relaxation), and Newton's method
-            // takes over again once the residual has dropped tenfold.
-            ++continuation_iterations;
-            elasticity.set_solution_from_stored(1.);
-            trial = elasticity.assemble_newton_system(false, nodal_forces);
-            if (!std::isfinite(trial))
-              {
-                elasticity.restore_solution();
-                shift *= 10.;
-                continue;
-              }
-            shift *= trial / residual;
-            last_shift = shift;
-            if (trial < 0.1 * continuation_start)
+                (on_energy && shift < 1e-3 * parameters.continuation_shift))
               shift = 0.;
           }
         else
@@ -298,9 +291,16 @@ namespace ssc
                                                           parameters.continuation_shift;
                     continuation_start = residual;
                     if (verbose)
-                      pcout << "    line search failed (du.K du/du.du = "
-                            << std::setprecision(3) << curvature
-                            << "): pseudo-transient continuation" << std::endl;
+                      {
+                        pcout << "    line search failed (du.K du/du.du = "
+                              << std::setprecision(3) << curvature
+                              << "): pseudo-transient continuation"
+                              << std::endl;
+                        if (curvature < 0)
+                          pcout << "    unstable direction: "
+                                << elasticity.describe_newton_update()
+                                << std::endl;
+                      }
                     continue;
                   }
                 report.failure =

@@ -26,6 +26,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace ssc
@@ -610,6 +611,80 @@ namespace ssc
     system_matrix.vmult(K_du, du);
     const double norm = du * du;
     return norm > 0 ? (du * K_du) / norm : 0.;
+  }
+
+
+  std::string
+  VolumeElasticity::describe_newton_update() const
+  {
+    TrilinosWrappers::MPI::Vector du(newton_update);
+    increment_constraints.set_zero(du);
+    std::map<types::global_dof_index, Point<3>> support_points;
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
+    // over the nodes, w = |du|^2 at the node: sums of w, w r, w r^2, w z,
+    // w z^2 and of the squares of the radial, hoop and vertical components
+    std::vector<double> sums(8, 0.);
+    // the largest nodal |du| and where it is
+    std::vector<double>                  largest(4, 0.);
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    std::set<types::global_dof_index>    visited;
+    const unsigned int n_nodes = fe.base_element(0).n_dofs_per_cell();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(cell_dofs);
+          for (unsigned int k = 0; k < n_nodes; ++k)
+            {
+              std::array<types::global_dof_index, 3> dofs;
+              for (unsigned int c = 0; c < 3; ++c)
+                dofs[c] = cell_dofs[fe.component_to_system_index(c, k)];
+              if (!locally_owned_dofs.is_element(dofs[0]) ||
+                  !visited.insert(dofs[0]).second)
+                continue;
+              const Tensor<1, 3> d({du[dofs[0]], du[dofs[1]], du[dofs[2]]});
+              const double       w = d.norm_square();
+              if (w == 0.)
+                continue;
+              const Point<3> &x      = support_points.at(dofs[0]);
+              const double    r      = std::hypot(x[0], x[1]);
+              const double    radial = r > 0 ? (d[0] * x[0] + d[1] * x[1]) / r :
+                                               std::hypot(d[0], d[1]);
+              const double hoop = r > 0 ? (d[1] * x[0] - d[0] * x[1]) / r : 0.;
+              sums[0] += w;
+              sums[1] += w * r;
+              sums[2] += w * r * r;
+              sums[3] += w * x[2];
+              sums[4] += w * x[2] * x[2];
+              sums[5] += radial * radial;
+              sums[6] += hoop * hoop;
+              sums[7] += d[2] * d[2];
+              if (std::sqrt(w) > largest[0])
+                largest = {std::sqrt(w), x[0], x[1], x[2]};
+            }
+        }
+    std::vector<double> total(sums.size());
+    Utilities::MPI::sum(sums, mpi_communicator, total);
+    for (const auto &l : Utilities::MPI::all_gather(mpi_communicator, largest))
+      if (l[0] > largest[0])
+        largest = l;
+    if (total[0] == 0.)
+      return "du = 0";
+    const auto spread = [&](const double sum, const double sum_of_squares) {
+      const double mean = sum / total[0];
+      return std::make_pair(
+        mean, std::sqrt(std::max(0., sum_of_squares / total[0] - mean * mean)));
+    };
+    const auto [r_mean, r_spread] = spread(total[1], total[2]);
+    const auto [z_mean, z_spread] = spread(total[3], total[4]);
+    std::ostringstream text;
+    text << std::setprecision(3) << "|du|^2 centred at r = " << r_mean << " +- "
+         << r_spread << " mm, z = " << z_mean << " +- " << z_spread
+         << " mm; radial/hoop/vertical shares " << total[5] / total[0] << '/'
+         << total[6] / total[0] << '/' << total[7] / total[0]
+         << "; largest at (" << largest[1] << ", " << largest[2] << ", "
+         << largest[3] << ") mm, " << largest[0] / std::sqrt(total[0])
+         << " of |du|";
+    return text.str();
   }
 
 

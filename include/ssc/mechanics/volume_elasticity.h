@@ -243,6 +243,15 @@ namespace ssc
     double
     newton_update_curvature() const;
 
+    /// Where the last update du lives (free dofs): the centre and spread
+    /// of |du|^2 in radius from the z axis (the punch's) and in depth, the
+    /// shares of its radial, hoop and vertical components and its largest
+    /// nodal value. Printed when the tangent is indefinite along du (whose
+    /// direction the negative eigenvalue then dominates), it tells which
+    /// part of the model loses stability (collective).
+    std::string
+    describe_newton_update() const;
+
     /// r . du for the last update du and the residual r of the last
     /// assembly: the slope of the energy along du (the loads are
     /// conservative), negative where du descends.
