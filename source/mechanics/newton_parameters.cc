@@ -14,9 +14,12 @@ namespace ssc
     prm.declare_entry("Relative tolerance",
                       "1e-8",
                       Patterns::Double(0, 1),
-                      "Newton stops when the residual norm has dropped by "
-                      "this factor from its value at the start of the "
-                      "increment...");
+                      "Newton stops when the residual norm is below this "
+                      "factor times the scale of the load: its value at "
+                      "the start of the increment or the norm of the "
+                      "applied forces, whichever is larger (a cut "
+                      "increment is not asked for more absolute accuracy "
+                      "than the whole load)...");
     prm.declare_entry("Absolute tolerance",
                       "1e-12",
                       Patterns::Double(0),

@@ -132,15 +132,21 @@ namespace ssc
         return report;
       }
     report.residuals.push_back(residual);
-    // While prescribed displacements are still to be reached, the residual
-    // says nothing about convergence: the tolerance is set relative to the
-    // residual once they are met.
+    // The tolerance is relative to the scale of the load: the residual at
+    // the start of the increment or the applied forces, whichever is
+    // larger, so that a cut increment is not asked for more absolute
+    // accuracy than the whole load. While prescribed displacements are
+    // still to be reached, the residual says nothing about convergence:
+    // the tolerance is set once they are met.
+    double applied = 0.;
+    for (const auto &force : nodal_forces)
+      applied += force.second * force.second;
     const double gap_tolerance = 1e-12;
-    double       load_scale    = residual;
+    double       load_scale    = std::max(residual, std::sqrt(applied));
     double       target        = gap > gap_tolerance ?
                                    0. :
                                    std::max(parameters.absolute_tolerance,
-                               parameters.relative_tolerance * residual);
+                               parameters.relative_tolerance * load_scale);
     if (verbose)
       pcout << "    Newton: residual " << std::scientific
             << std::setprecision(3) << residual << std::defaultfloat
