@@ -33,6 +33,26 @@ namespace ssc
       "law, the loads and the contact are conservative); residual: "
       "halved until the residual norm decreases; none: the whole step. "
       "Both searches back off from inverted cells.");
+    prm.declare_entry(
+      "Globalisation",
+      "line search",
+      Patterns::Selection("line search|trust region|hybrid"),
+      "How Newton's method reaches a solution from far away. line search: "
+      "the Line search along each update, and where it finds no decrease "
+      "(past a stability limit, where the tangent is indefinite) the "
+      "pseudo-transient continuation. trust region: every update is a "
+      "trust-region step, the model g.p + p.K p/2 minimised by Steihaug-"
+      "Toint truncated CG within a radius in the AMG preconditioner's "
+      "norm, which follows directions of negative curvature to the "
+      "radius, accepted if the energy (integrated from the residual by "
+      "Simpson's rule) falls by at least 5 % of the model's prediction; "
+      "the radius shrinks after poor steps and grows after good ones on "
+      "its boundary. hybrid: the line search, and trust-region steps for "
+      "the rest of the increment once it has found no decrease. Trust-"
+      "region steps that end on the radius or are rejected count against "
+      "Continuation iterations, the others (Newton steps) against Max "
+      "iterations. While prescribed displacements are still to be "
+      "reached, every update is a Newton step.");
     prm.declare_entry("Max line search steps",
                       "8",
                       Patterns::Integer(1, 50),
@@ -73,7 +93,9 @@ namespace ssc
       "where the tangent is indefinite), Newton's method continues with "
       "the tangent shifted by a multiple of its diagonal (pseudo-transient "
       "continuation) for at most this many iterations per increment; 0 "
-      "turns it off and cuts the increment instead.");
+      "turns it off and cuts the increment instead. With trust-region "
+      "steps (Globalisation), the most steps per increment that end on "
+      "the radius or are rejected.");
     prm.declare_entry("Continuation shift",
                       "0.1",
                       Patterns::Double(0),
@@ -114,18 +136,23 @@ namespace ssc
     line_search              = search == "energy"   ? LineSearch::energy :
                                search == "residual" ? LineSearch::residual :
                                                       LineSearch::none;
-    max_line_search          = prm.get_integer("Max line search steps");
-    initial_steps            = prm.get_integer("Initial steps");
-    minimum_increment        = prm.get_double("Minimum increment");
-    max_increments           = prm.get_integer("Max increments");
-    growth_factor            = prm.get_double("Growth factor");
-    easy_iterations          = prm.get_integer("Easy iterations");
-    continuation_iterations  = prm.get_integer("Continuation iterations");
-    continuation_shift       = prm.get_double("Continuation shift");
-    forcing_term             = prm.get("Forcing term") == "fixed" ?
-                                 ForcingTerm::fixed :
-                                 ForcingTerm::eisenstat_walker;
-    max_forcing_term         = prm.get_double("Max forcing term");
+    const std::string globalisation_name = prm.get("Globalisation");
+    globalisation           = globalisation_name == "trust region" ?
+                                Globalisation::trust_region :
+                              globalisation_name == "hybrid" ? Globalisation::hybrid :
+                                                               Globalisation::line_search;
+    max_line_search         = prm.get_integer("Max line search steps");
+    initial_steps           = prm.get_integer("Initial steps");
+    minimum_increment       = prm.get_double("Minimum increment");
+    max_increments          = prm.get_integer("Max increments");
+    growth_factor           = prm.get_double("Growth factor");
+    easy_iterations         = prm.get_integer("Easy iterations");
+    continuation_iterations = prm.get_integer("Continuation iterations");
+    continuation_shift      = prm.get_double("Continuation shift");
+    forcing_term            = prm.get("Forcing term") == "fixed" ?
+                                ForcingTerm::fixed :
+                                ForcingTerm::eisenstat_walker;
+    max_forcing_term        = prm.get_double("Max forcing term");
     AssertThrow(continuation_iterations == 0 || continuation_shift > 0,
                 ExcMessage("Nonlinear solver/Continuation shift must be "
                            "positive when Continuation iterations is not 0."));

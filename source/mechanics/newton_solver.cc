@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace ssc
@@ -108,6 +109,49 @@ namespace ssc
   }
 
 
+  NewtonSolver::TrustRegionStep
+  NewtonSolver::trust_region_step(
+    double                                                        &radius,
+    const double                                                   forcing,
+    const double                                                   target,
+    const bool                                                     new_tangent,
+    const std::vector<std::pair<types::global_dof_index, double>> &nodal_forces)
+  {
+    TrustRegionStep result{false, 0., 0., {}};
+    result.update = elasticity.solve_trust_region_update(radius,
+                                                         forcing,
+                                                         0.1 * target,
+                                                         new_tangent);
+    if (radius <= 0.)
+      radius = result.update.gradient_norm;
+    if (result.update.step_norm == 0.)
+      return result;
+    // Pi(u + p) - Pi(u) = integral of r(u + s p).p over s in [0, 1]
+    elasticity.store_solution();
+    const double slope_0 = elasticity.residual_along_update();
+    elasticity.set_solution_from_stored(0.5);
+    const double middle =
+      elasticity.assemble_newton_system(false, nodal_forces);
+    const double slope_half = elasticity.residual_along_update();
+    elasticity.set_solution_from_stored(1.);
+    result.residual = elasticity.assemble_newton_system(false, nodal_forces);
+    const double slope_1  = elasticity.residual_along_update();
+    const double decrease = -(slope_0 + 4. * slope_half + slope_1) / 6.;
+    result.ratio = std::isfinite(middle) && std::isfinite(result.residual) ?
+                     decrease / result.update.predicted_decrease :
+                     -std::numeric_limits<double>::infinity();
+    if (result.ratio < 0.25)
+      radius = 0.25 * std::min(radius, result.update.step_norm);
+    else if (result.ratio > 0.75 && result.update.on_boundary)
+      radius *= 2.;
+    result.accepted = result.ratio > 0.05 ||
+                      (std::isfinite(middle) && result.residual <= target);
+    if (!result.accepted)
+      elasticity.restore_solution();
+    return result;
+  }
+
+
   NewtonSolver::NewtonSolver(VolumeElasticity       &elasticity,
                              const NewtonParameters &parameters,
                              ConditionalOStream     &pcout,
@@ -154,7 +198,11 @@ namespace ssc
     // the pseudo-transient shift: 0 is Newton's method with line search;
     // the continuation hands back to Newton once it has lowered the
     // residual tenfold, and resumes with its last shift if Newton fails
-    double       shift = 0., last_shift = 0., continuation_start = 0.;
+    double shift = 0., last_shift = 0., continuation_start = 0.;
+    // trust-region steps instead (radius <= 0: not yet known)
+    bool trust_region = parameters.globalisation == Globalisation::trust_region;
+    double       radius = 0., first_radius = 0.;
+    bool         reuse_tangent           = false;
     unsigned int continuation_iterations = 0;
     unsigned int newton_iterations       = 0;
     // the forcing term: the relative accuracy of the next update (0: the
@@ -174,15 +222,20 @@ namespace ssc
                              " iterations";
             return report;
           }
-        if (shift > 0 && continuation_exhausted())
+        if ((shift > 0 || trust_region) && continuation_exhausted())
           {
             report.failure =
-              "the pseudo-transient continuation did not converge in " +
+              (trust_region ? "the trust-region steps" :
+                              "the pseudo-transient continuation") +
+              std::string(" did not converge in ") +
               std::to_string(parameters.continuation_iterations) +
               " iterations";
             return report;
           }
-        elasticity.assemble_newton_system(true, nodal_forces);
+        // after a rejected trust-region step only the residual at the
+        // restored solution is needed: the tangent and its preconditioner
+        // are still those of this point
+        elasticity.assemble_newton_system(!reuse_tangent, nodal_forces);
         // the scale of the load: the right-hand side of the first update
         // (prescribed displacements) or the initial residual (forces)
         if (report.iterations == 0)
@@ -190,140 +243,199 @@ namespace ssc
             std::max(load_scale, elasticity.get_system_rhs().l2_norm());
         if (shift > 0)
           elasticity.shift_tangent(shift);
-        try
-          {
-            // an update CG could not bring to its target is still an
-            // inexact Newton step if it reached the largest forcing term
-            const LinearSolveReport linear =
-              elasticity.solve_newton_update(forcing,
-                                             0.1 * target,
-                                             inexact ?
-                                               parameters.max_forcing_term :
-                                               0.);
-            report.linear_iterations += linear.iterations;
-            if (!linear.reached_target && verbose)
-              pcout << "    (CG stopped at its iteration limit, relative "
-                       "residual "
-                    << std::setprecision(3)
-                    << linear.final_residual /
-                         elasticity.get_system_rhs().l2_norm()
-                    << ")" << std::endl;
-          }
-        catch (const ExceptionBase &e)
-          {
-            std::ostringstream message;
-            e.print_info(message);
-            report.failure = "the linear solver failed (" +
-                             Utilities::trim(message.str()) + ")";
-            return report;
-          }
-        elasticity.store_solution();
         const bool closing = gap > gap_tolerance;
         double     step = 1., trial = 0.;
-        if (shift > 0)
+        if (trust_region && !closing)
           {
-            // Continuation with the shifted tangent K + shift D, which is
-            // positive definite for a large enough shift where K is not. On
-            // the energy (Levenberg-Marquardt): the line search takes a
-            // step along the (descending) update; a whole step halves the
-            // shift, a shortened one doubles it. Otherwise pseudo-transient
-            // continuation: the whole step, the shift following the
-            // residual (switched evolution relaxation). Either way, no
-            // descent (or inverted cells) multiplies the shift by ten, and
-            // Newton's method takes over again once the residual has
-            // dropped tenfold (on the energy also once the shift has
-            // become small).
-            const bool on_energy = parameters.line_search == LineSearch::energy;
-            ++continuation_iterations;
-            LineSearchResult search{true, 1., 0.};
-            if (on_energy)
-              search = energy_line_search(target, nodal_forces);
+            const TrustRegionStep iteration = trust_region_step(
+              radius, forcing, target, !reuse_tangent, nodal_forces);
+            reuse_tangent = !iteration.accepted;
+            report.linear_iterations += iteration.update.iterations;
+            if (first_radius == 0.)
+              first_radius = radius;
+            // only a Newton step (inside the region) counts as one
+            if (iteration.update.on_boundary || !iteration.accepted)
+              ++continuation_iterations;
             else
+              ++newton_iterations;
+            if (verbose)
+              pcout << "    trust region: step " << std::setprecision(3)
+                    << iteration.update.step_norm << " ("
+                    << (iteration.update.negative_curvature ?
+                          "negative curvature, " :
+                          "")
+                    << (iteration.update.on_boundary ? "on the boundary" :
+                                                       "inside")
+                    << ", " << iteration.update.iterations
+                    << " CG), energy decrease / predicted " << iteration.ratio
+                    << (iteration.accepted ? "" : ", rejected")
+                    << "; radius now " << radius << std::endl;
+            if (!iteration.accepted)
               {
-                elasticity.set_solution_from_stored(1.);
-                search.residual =
-                  elasticity.assemble_newton_system(false, nodal_forces);
-                search.accepted = std::isfinite(search.residual);
-              }
-            if (!search.accepted)
-              {
-                elasticity.restore_solution();
-                shift *= 10.;
+                if (iteration.update.preconditioner_indefinite &&
+                    iteration.update.step_norm == 0.)
+                  {
+                    report.failure = "the preconditioner is not positive "
+                                     "definite (trust-region step)";
+                    return report;
+                  }
+                if (radius < 1e-10 * first_radius)
+                  {
+                    report.failure = "the trust region collapsed";
+                    return report;
+                  }
                 continue;
               }
-            step  = search.step;
-            trial = search.residual;
-            shift *= on_energy ? (step == 1. ? 0.5 : 2.) : trial / residual;
-            last_shift = shift;
-            if (trial < 0.1 * continuation_start ||
-                (on_energy && shift < 1e-3 * parameters.continuation_shift))
-              shift = 0.;
+            trial = iteration.residual;
           }
         else
           {
-            ++newton_iterations;
-            // A step that reaches the prescribed displacements is taken
-            // whole; otherwise the line search chooses it.
-            LineSearchResult search{true, 1., 0.};
-            if (closing || parameters.line_search == LineSearch::none)
+            try
               {
-                elasticity.set_solution_from_stored(1.);
-                search.residual =
-                  elasticity.assemble_newton_system(false, nodal_forces);
+                // an update CG could not bring to its target is still an
+                // inexact Newton step if it reached the largest forcing term
+                const LinearSolveReport linear =
+                  elasticity.solve_newton_update(forcing,
+                                                 0.1 * target,
+                                                 inexact ?
+                                                   parameters.max_forcing_term :
+                                                   0.);
+                report.linear_iterations += linear.iterations;
+                if (!linear.reached_target && verbose)
+                  pcout << "    (CG stopped at its iteration limit, relative "
+                           "residual "
+                        << std::setprecision(3)
+                        << linear.final_residual /
+                             elasticity.get_system_rhs().l2_norm()
+                        << ")" << std::endl;
+              }
+            catch (const ExceptionBase &e)
+              {
+                std::ostringstream message;
+                e.print_info(message);
+                report.failure = "the linear solver failed (" +
+                                 Utilities::trim(message.str()) + ")";
+                return report;
+              }
+            elasticity.store_solution();
+            if (shift > 0)
+              {
+                // Continuation with the shifted tangent K + shift D, which is
+                // positive definite for a large enough shift where K is not. On
+                // the energy (Levenberg-Marquardt): the line search takes a
+                // step along the (descending) update; a whole step halves the
+                // shift, a shortened one doubles it. Otherwise pseudo-transient
+                // continuation: the whole step, the shift following the
+                // residual (switched evolution relaxation). Either way, no
+                // descent (or inverted cells) multiplies the shift by ten, and
+                // Newton's method takes over again once the residual has
+                // dropped tenfold (on the energy also once the shift has
+                // become small).
+                const bool on_energy =
+                  parameters.line_search == LineSearch::energy;
+                ++continuation_iterations;
+                LineSearchResult search{true, 1., 0.};
+                if (on_energy)
+                  search = energy_line_search(target, nodal_forces);
+                else
+                  {
+                    elasticity.set_solution_from_stored(1.);
+                    search.residual =
+                      elasticity.assemble_newton_system(false, nodal_forces);
+                    search.accepted = std::isfinite(search.residual);
+                  }
+                if (!search.accepted)
+                  {
+                    elasticity.restore_solution();
+                    shift *= 10.;
+                    continue;
+                  }
+                step  = search.step;
+                trial = search.residual;
+                shift *= on_energy ? (step == 1. ? 0.5 : 2.) : trial / residual;
+                last_shift = shift;
+                if (trial < 0.1 * continuation_start ||
+                    (on_energy && shift < 1e-3 * parameters.continuation_shift))
+                  shift = 0.;
               }
             else
-              search = parameters.line_search == LineSearch::energy ?
-                         energy_line_search(target, nodal_forces) :
-                         residual_line_search(residual, target, nodal_forces);
-            step  = search.step;
-            trial = search.residual;
-            if (!search.accepted)
               {
-                elasticity.restore_solution();
-                if (forcing > 0.)
+                ++newton_iterations;
+                // A step that reaches the prescribed displacements is taken
+                // whole; otherwise the line search chooses it.
+                LineSearchResult search{true, 1., 0.};
+                if (closing || parameters.line_search == LineSearch::none)
                   {
-                    // an inexact update may be what fails: solve it again,
-                    // accurately
-                    forcing = 0.;
-                    continue;
+                    elasticity.set_solution_from_stored(1.);
+                    search.residual =
+                      elasticity.assemble_newton_system(false, nodal_forces);
                   }
-                // a limit or bifurcation point shows as negative curvature
-                const double curvature = elasticity.newton_update_curvature();
-                if (!continuation_exhausted())
+                else
+                  search =
+                    parameters.line_search == LineSearch::energy ?
+                      energy_line_search(target, nodal_forces) :
+                      residual_line_search(residual, target, nodal_forces);
+                step  = search.step;
+                trial = search.residual;
+                if (!search.accepted)
                   {
-                    // past a stability limit Newton's direction need not
-                    // lower the residual: continue with a shifted tangent
-                    shift              = last_shift > 0 ? last_shift :
-                                                          parameters.continuation_shift;
-                    continuation_start = residual;
-                    if (verbose)
+                    elasticity.restore_solution();
+                    if (forcing > 0.)
                       {
-                        pcout << "    line search failed (du.K du/du.du = "
-                              << std::setprecision(3) << curvature
-                              << "): pseudo-transient continuation"
-                              << std::endl;
-                        if (curvature < 0)
-                          pcout << "    unstable direction: "
-                                << elasticity.describe_newton_update()
-                                << std::endl;
+                        // an inexact update may be what fails: solve it again,
+                        // accurately
+                        forcing = 0.;
+                        continue;
                       }
-                    continue;
+                    // a limit or bifurcation point shows as negative curvature
+                    const double curvature =
+                      elasticity.newton_update_curvature();
+                    if (parameters.globalisation == Globalisation::hybrid &&
+                        !continuation_exhausted())
+                      {
+                        trust_region = true;
+                        if (verbose)
+                          pcout << "    line search failed (du.K du/du.du = "
+                                << std::setprecision(3) << curvature
+                                << "): trust-region steps" << std::endl;
+                        continue;
+                      }
+                    if (!continuation_exhausted())
+                      {
+                        // past a stability limit Newton's direction need not
+                        // lower the residual: continue with a shifted tangent
+                        shift              = last_shift > 0 ? last_shift :
+                                                              parameters.continuation_shift;
+                        continuation_start = residual;
+                        if (verbose)
+                          {
+                            pcout << "    line search failed (du.K du/du.du = "
+                                  << std::setprecision(3) << curvature
+                                  << "): pseudo-transient continuation"
+                                  << std::endl;
+                            if (curvature < 0)
+                              pcout << "    unstable direction: "
+                                    << elasticity.describe_newton_update()
+                                    << std::endl;
+                          }
+                        continue;
+                      }
+                    report.failure =
+                      std::isfinite(trial) ?
+                        (parameters.line_search == LineSearch::energy ?
+                           "the line search found no decrease of the energy" :
+                           "the line search found no decrease of the residual") :
+                        "every step of the line search inverts cells";
+                    if (curvature < 0)
+                      {
+                        std::ostringstream text;
+                        text << "; the tangent is indefinite along the Newton "
+                                "direction (du.K du/du.du = "
+                             << std::setprecision(3) << curvature << ")";
+                        report.failure += text.str();
+                      }
+                    return report;
                   }
-                report.failure =
-                  std::isfinite(trial) ?
-                    (parameters.line_search == LineSearch::energy ?
-                       "the line search found no decrease of the energy" :
-                       "the line search found no decrease of the residual") :
-                    "every step of the line search inverts cells";
-                if (curvature < 0)
-                  {
-                    std::ostringstream text;
-                    text << "; the tangent is indefinite along the Newton "
-                            "direction (du.K du/du.du = "
-                         << std::setprecision(3) << curvature << ")";
-                    report.failure += text.str();
-                  }
-                return report;
               }
           }
         ++report.iterations;

@@ -587,6 +587,34 @@ namespace ssc
   }
 
 
+  TruncatedCGReport
+  VolumeElasticity::solve_trust_region_update(const double radius,
+                                              const double forcing,
+                                              const double absolute_floor,
+                                              const bool   new_tangent)
+  {
+    TimerOutput::Scope t(timer, "solve");
+    if (new_tangent)
+      setup_preconditioner();
+    const double tolerance =
+      std::max(std::max(parameters.tolerance, forcing) * system_rhs.l2_norm(),
+               absolute_floor);
+    const TruncatedCGReport report = truncated_cg(
+      system_matrix,
+      preconditioner,
+      system_rhs,
+      radius,
+      tolerance,
+      parameters.max_iterations,
+      [this](TrilinosWrappers::MPI::Vector &v) {
+        increment_constraints.set_zero(v);
+      },
+      newton_update);
+    increment_constraints.distribute(newton_update);
+    return report;
+  }
+
+
   void
   VolumeElasticity::shift_tangent(const double shift)
   {

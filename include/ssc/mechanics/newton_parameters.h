@@ -15,6 +15,14 @@ namespace ssc
     energy    ///< near the minimum of the energy along the update
   };
 
+  /// How Newton's method keeps its iterates on the way to a solution.
+  enum class Globalisation
+  {
+    line_search,  ///< a line search, the continuation where it fails
+    trust_region, ///< trust-region steps (Steihaug-Toint CG) throughout
+    hybrid        ///< a line search, trust-region steps where it fails
+  };
+
   /// How accurately each Newton update is solved.
   enum class ForcingTerm
   {
@@ -26,20 +34,21 @@ namespace ssc
   /// "Nonlinear solver").
   struct NewtonParameters
   {
-    unsigned int max_iterations          = 25;
-    double       relative_tolerance      = 1e-8;
-    double       absolute_tolerance      = 1e-12;
-    LineSearch   line_search             = LineSearch::energy;
-    unsigned int max_line_search         = 8;
-    unsigned int initial_steps           = 4;
-    double       minimum_increment       = 1e-4;
-    unsigned int max_increments          = 200;
-    double       growth_factor           = 1.5;
-    unsigned int easy_iterations         = 4;
-    unsigned int continuation_iterations = 100;
-    double       continuation_shift      = 0.1;
-    ForcingTerm  forcing_term            = ForcingTerm::eisenstat_walker;
-    double       max_forcing_term        = 1e-2;
+    unsigned int  max_iterations          = 25;
+    double        relative_tolerance      = 1e-8;
+    double        absolute_tolerance      = 1e-12;
+    Globalisation globalisation           = Globalisation::line_search;
+    LineSearch    line_search             = LineSearch::energy;
+    unsigned int  max_line_search         = 8;
+    unsigned int  initial_steps           = 4;
+    double        minimum_increment       = 1e-4;
+    unsigned int  max_increments          = 200;
+    double        growth_factor           = 1.5;
+    unsigned int  easy_iterations         = 4;
+    unsigned int  continuation_iterations = 100;
+    double        continuation_shift      = 0.1;
+    ForcingTerm   forcing_term            = ForcingTerm::eisenstat_walker;
+    double        max_forcing_term        = 1e-2;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -45,7 +45,9 @@ namespace ssc
    * Where the line search finds no decrease (past a stability limit the
    * tangent is indefinite and Newton's direction need not lower the
    * residual), the solve continues with the tangent shifted by a multiple
-   * of its diagonal (pseudo-transient continuation) before it gives up.
+   * of its diagonal (pseudo-transient continuation) before it gives up,
+   * or with trust-region steps, which follow directions of negative
+   * curvature off the saddle (Nonlinear solver/Globalisation).
    */
   class NewtonSolver
   {
@@ -103,6 +105,34 @@ namespace ssc
     LineSearchResult
     energy_line_search(
       const double target,
+      const std::vector<std::pair<types::global_dof_index, double>>
+        &nodal_forces);
+
+    /// What one trust-region iteration did.
+    struct TrustRegionStep
+    {
+      bool              accepted;
+      double            residual; ///< at the accepted step
+      double            ratio;    ///< actual / predicted energy decrease
+      TruncatedCGReport update;
+    };
+
+    /**
+     * A trust-region iteration at the assembled tangent and residual: the
+     * step from truncated_cg() within @p radius (<= 0: the preconditioned
+     * gradient's norm), the energy decrease along it integrated from the
+     * slopes r.p at 0, 1/2 and 1 (Simpson's rule, exact for a cubic
+     * energy) against the model's prediction, the radius updated from
+     * their ratio (Nocedal and Wright, algorithm 4.1); a rejected step
+     * restores the solution. Without @p new_tangent the preconditioner of
+     * the last step is reused (the same tangent, after a rejected step).
+     */
+    TrustRegionStep
+    trust_region_step(
+      double      &radius,
+      const double forcing,
+      const double target,
+      const bool   new_tangent,
       const std::vector<std::pair<types::global_dof_index, double>>
         &nodal_forces);
 

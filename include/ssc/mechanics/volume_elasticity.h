@@ -28,6 +28,7 @@
 #include <ssc/mechanics/cell_contribution.h>
 #include <ssc/mechanics/dof_contribution.h>
 #include <ssc/mechanics/elasticity_parameters.h>
+#include <ssc/mechanics/truncated_cg.h>
 
 #include <functional>
 #include <memory>
@@ -229,6 +230,23 @@ namespace ssc
     solve_newton_update(const double forcing        = 0.,
                         const double absolute_floor = 0.,
                         const double acceptable     = 0.);
+
+    /**
+     * The Newton update as a trust-region step (truncated_cg(): Steihaug-
+     * Toint CG + AMG, homogeneous constraints) within @p radius in the
+     * preconditioner's norm (<= 0: the preconditioned gradient's norm),
+     * to the relative tolerance @p forcing (or the linear solver's) but not
+     * below @p absolute_floor, as solve_newton_update(). The tangent need
+     * not be positive definite. Only with the prescribed displacements
+     * reached (the update must not move the Dirichlet dofs). Without
+     * @p new_tangent the preconditioner of the last solve is reused (the
+     * tangent has not changed since).
+     */
+    TruncatedCGReport
+    solve_trust_region_update(const double radius,
+                              const double forcing        = 0.,
+                              const double absolute_floor = 0.,
+                              const bool   new_tangent    = true);
 
     /// Adds @p shift times its own diagonal to the tangent (free rows):
     /// K + shift D is positive definite for a large enough shift where K
