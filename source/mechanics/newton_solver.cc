@@ -390,28 +390,27 @@ namespace ssc
                     // a limit or bifurcation point shows as negative curvature
                     const double curvature =
                       elasticity.newton_update_curvature();
-                    if (parameters.globalisation == Globalisation::hybrid &&
-                        !continuation_exhausted())
-                      {
-                        trust_region = true;
-                        if (verbose)
-                          pcout << "    line search failed (du.K du/du.du = "
-                                << std::setprecision(3) << curvature
-                                << "): trust-region steps" << std::endl;
-                        continue;
-                      }
                     if (!continuation_exhausted())
                       {
                         // past a stability limit Newton's direction need not
-                        // lower the residual: continue with a shifted tangent
-                        shift              = last_shift > 0 ? last_shift :
-                                                              parameters.continuation_shift;
-                        continuation_start = residual;
+                        // lower the residual: continue with trust-region
+                        // steps or with a shifted tangent
+                        if (parameters.globalisation == Globalisation::hybrid)
+                          trust_region = true;
+                        else
+                          {
+                            shift              = last_shift > 0 ?
+                                                   last_shift :
+                                                   parameters.continuation_shift;
+                            continuation_start = residual;
+                          }
                         if (verbose)
                           {
                             pcout << "    line search failed (du.K du/du.du = "
-                                  << std::setprecision(3) << curvature
-                                  << "): pseudo-transient continuation"
+                                  << std::setprecision(3) << curvature << "): "
+                                  << (trust_region ?
+                                        "trust-region steps" :
+                                        "pseudo-transient continuation")
                                   << std::endl;
                             if (curvature < 0)
                               pcout << "    unstable direction: "
