@@ -67,22 +67,13 @@ namespace ssc
         K.vmult(Kd, d);
         project(Kd);
         const double dKd = d * Kd;
-        if (dKd <= 0.)
+        // non-positive curvature: the model falls without bound along d
+        report.negative_curvature = dKd <= 0.;
+        const double alpha        = rz / dKd;
+        const double pp_next      = pp + 2. * alpha * pd + alpha * alpha * dd;
+        if (report.negative_curvature || pp_next >= radius * radius)
           {
-            // non-positive curvature: the model falls without bound along
-            // d; go to the boundary
-            report.negative_curvature = true;
-            report.on_boundary        = true;
-            const double tau          = step_to_boundary(pp, pd, dd, radius);
-            step.add(tau, d);
-            r.add(tau, Kd);
-            pp = radius * radius;
-            return finish();
-          }
-        const double alpha   = rz / dKd;
-        const double pp_next = pp + 2. * alpha * pd + alpha * alpha * dd;
-        if (pp_next >= radius * radius)
-          {
+            // along d to the boundary
             report.on_boundary = true;
             const double tau   = step_to_boundary(pp, pd, dd, radius);
             step.add(tau, d);
