@@ -168,8 +168,9 @@ namespace ssc
     const std::vector<std::pair<types::global_dof_index, double>> &nodal_forces)
   {
     NewtonReport report;
-    double residual = elasticity.assemble_newton_system(false, nodal_forces);
-    double gap      = elasticity.dirichlet_gap();
+    const auto   start = elasticity.get_solution();
+    double residual    = elasticity.assemble_newton_system(false, nodal_forces);
+    double gap         = elasticity.dirichlet_gap();
     if (!std::isfinite(residual))
       {
         report.failure = "inverted cells at the start of the increment";
@@ -224,6 +225,14 @@ namespace ssc
           }
         if ((shift > 0 || trust_region) && continuation_exhausted())
           {
+            if (verbose)
+              {
+                // where the iterates went: the change since the start
+                auto change = elasticity.get_solution();
+                change -= start;
+                pcout << "    change of the solution over the increment: "
+                      << elasticity.describe_displacement(change) << std::endl;
+              }
             report.failure =
               (trust_region ? "the trust-region steps" :
                               "the pseudo-transient continuation") +

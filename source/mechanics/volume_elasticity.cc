@@ -647,6 +647,14 @@ namespace ssc
   {
     TrilinosWrappers::MPI::Vector du(newton_update);
     increment_constraints.set_zero(du);
+    return describe_displacement(du);
+  }
+
+
+  std::string
+  VolumeElasticity::describe_displacement(
+    const TrilinosWrappers::MPI::Vector &du) const
+  {
     std::map<types::global_dof_index, Point<3>> support_points;
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
     // over the nodes, w = |du|^2 at the node: sums of w, w r, w r^2, w z,
@@ -708,10 +716,10 @@ namespace ssc
     text << std::setprecision(3) << "|du|^2 centred at r = " << r_mean << " +- "
          << r_spread << " mm, z = " << z_mean << " +- " << z_spread
          << " mm; radial/hoop/vertical shares " << total[5] / total[0] << '/'
-         << total[6] / total[0] << '/' << total[7] / total[0]
-         << "; largest at (" << largest[1] << ", " << largest[2] << ", "
-         << largest[3] << ") mm, " << largest[0] / std::sqrt(total[0])
-         << " of |du|";
+         << total[6] / total[0] << '/' << total[7] / total[0] << "; largest "
+         << largest[0] << " (" << largest[0] / std::sqrt(total[0])
+         << " of |du|) at (" << largest[1] << ", " << largest[2] << ", "
+         << largest[3] << ") mm";
     return text.str();
   }
 

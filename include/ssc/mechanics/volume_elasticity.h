@@ -270,6 +270,11 @@ namespace ssc
     std::string
     describe_newton_update() const;
 
+    /// The same description of any displacement field @p du (locally owned
+    /// entries, e.g. the change of the solution over a failed increment).
+    std::string
+    describe_displacement(const TrilinosWrappers::MPI::Vector &du) const;
+
     /// r . du for the last update du and the residual r of the last
     /// assembly: the slope of the energy along du (the loads are
     /// conservative), negative where du descends.
