@@ -137,7 +137,10 @@ namespace ssc
     result.residual = elasticity.assemble_newton_system(false, nodal_forces);
     const double slope_1  = elasticity.residual_along_update();
     const double decrease = -(slope_0 + 4. * slope_half + slope_1) / 6.;
-    result.ratio = std::isfinite(middle) && std::isfinite(result.residual) ?
+    // a step the model does not predict to descend (possible only with an
+    // indefinite preconditioner) counts as a poor one
+    result.ratio = std::isfinite(middle) && std::isfinite(result.residual) &&
+                       result.update.predicted_decrease > 0. ?
                      decrease / result.update.predicted_decrease :
                      -std::numeric_limits<double>::infinity();
     if (result.ratio < 0.25)
