@@ -30,6 +30,10 @@ mixed formulation Q2 with the mean dilatation, Q2-P0, which is inf-sup
 stable); use it with --refinements 0 (257k DoFs). There the runs pass the
 depth of about 11.2 mm at which the Q1 mixed runs stop (benchmarks/README.md).
 
+--globalisation chooses Nonlinear solver/Globalisation (default hybrid:
+the energy line search, and trust-region steps where it finds no
+decrease).
+
 --laws and --contacts run a subset; its rows replace those of the same law
 and contact in the CSV, the others stay. --ranks sets the MPI ranks (2).
 The runs' folders, with their log.txt, stay in output/large_deformation*/
@@ -37,6 +41,7 @@ The runs' folders, with their log.txt, stay in output/large_deformation*/
 
     /usr/bin/python3 benchmarks/large_deformation.py [--refinements N]
         [--formulation mixed|displacement] [--degree 1|2] [--ranks N]
+        [--globalisation "line search"|"trust region"|hybrid]
         [--laws LAW ...] [--contacts CONTACT ...] [--plot-only]
 """
 import argparse, csv, os, re, subprocess, time
@@ -54,13 +59,15 @@ FIELDS = ["law", "contact", "dofs", "step", "force_N", "depth_mm",
           "wall_time_s", "total_wall_time_s", "status"]
 
 
-def run(law, contact, refinements, formulation, degree, ranks, folder):
+def run(law, contact, refinements, formulation, degree, ranks, globalisation,
+        folder):
     name = f"{law}_{contact}".replace("-", "_")
     overrides = {
         "Run/Output directory": folder, "Run/Name": name,
         "Run/Write fields": "false", "Punch/Section": "false",
         "Punch/Contact": contact, "Elasticity/Formulation": formulation,
         "Elasticity/Degree": str(degree),
+        "Nonlinear solver/Globalisation": globalisation,
         "Mesh/Region of interest/Local refinements": str(refinements)}
     for layer in LAYERS:
         overrides[f"Layer stack/{layer}/Material model"] = law
@@ -176,6 +183,8 @@ def main():
                         default="mixed")
     parser.add_argument("--degree", type=int, choices=[1, 2], default=1)
     parser.add_argument("--ranks", type=int, default=2)
+    parser.add_argument("--globalisation", default="hybrid",
+                        choices=["line search", "trust region", "hybrid"])
     parser.add_argument("--laws", nargs="+", choices=LAWS, default=LAWS)
     parser.add_argument("--contacts", nargs="+", choices=CONTACTS,
                         default=CONTACTS)
@@ -194,7 +203,8 @@ def main():
             for law in args.laws:
                 new_rows[(law, contact)] = run(law, contact, args.refinements,
                                                args.formulation, args.degree,
-                                               args.ranks, folder)
+                                               args.ranks, args.globalisation,
+                                               folder)
         # read only now: another subset may have been run meanwhile
         rows = {}
         if os.path.exists(csv_path):
