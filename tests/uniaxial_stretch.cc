@@ -120,10 +120,14 @@ main(int argc, char **argv)
           double            increment = 0.1;
           const double      target    = 2. * (lambda - 1.); // length 2 mm
           const auto        report    = newton.follow(
-            0., std::abs(target), increment, [&](const double load) {
+            0.,
+            std::abs(target),
+            increment,
+            [&](const double load) {
               elasticity.set_dirichlet_scale(target > 0 ? load : -load);
               return std::vector<std::pair<types::global_dof_index, double>>();
-            });
+            },
+            ssc::LoadDependence::right_hand_side);
           const double force    = elasticity.reaction(1)[0];
           const double expected = closed_form_force(model, 0.01, 0.45, lambda);
           std::ostringstream line;

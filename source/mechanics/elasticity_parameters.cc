@@ -51,7 +51,11 @@ namespace ssc
     prm.declare_entry("Max iterations",
                       "1000",
                       Patterns::Integer(1),
-                      "CG iteration limit; reaching it is an error.");
+                      "CG iteration limit. Reaching it is an error, but "
+                      "for a Newton update whose residual is already below "
+                      "Nonlinear solver/Max forcing term times the right-"
+                      "hand side or Newton's own tolerance: that update is "
+                      "kept as an inexact step.");
     prm.declare_entry("Rigid body modes",
                       "true",
                       Patterns::Bool(),

@@ -304,22 +304,24 @@ namespace ssc
           {
             try
               {
-                // an update CG could not bring to its target is still an
-                // inexact Newton step if it reached the largest forcing term
-                const LinearSolveReport linear =
-                  elasticity.solve_newton_update(forcing,
-                                                 0.1 * target,
-                                                 inexact ?
-                                                   parameters.max_forcing_term :
-                                                   0.);
+                // An update CG could not bring to its target is still an
+                // inexact Newton step if it reached the largest forcing term,
+                // or if its linearised residual is already within Newton's
+                // tolerance (near the solution CG's own target, a tenth of
+                // that, can lie below what round-off lets it reach).
+                const double rhs_norm = elasticity.get_system_rhs().l2_norm();
+                const LinearSolveReport linear = elasticity.solve_newton_update(
+                  forcing,
+                  0.1 * target,
+                  std::max(inexact ? parameters.max_forcing_term * rhs_norm :
+                                     0.,
+                           target));
                 report.linear_iterations += linear.iterations;
                 if (!linear.reached_target && verbose)
                   pcout << "    (CG stopped at its iteration limit, relative "
                            "residual "
                         << std::setprecision(3)
-                        << linear.final_residual /
-                             elasticity.get_system_rhs().l2_norm()
-                        << ")" << std::endl;
+                        << linear.final_residual / rhs_norm << ")" << std::endl;
               }
             catch (const ExceptionBase &e)
               {
@@ -327,6 +329,7 @@ namespace ssc
                 e.print_info(message);
                 report.failure = "the linear solver failed (" +
                                  Utilities::trim(message.str()) + ")";
+                report.linear_failure_at_start = report.iterations == 0;
                 return report;
               }
             elasticity.store_solution();
@@ -482,11 +485,12 @@ namespace ssc
 
   LoadPathReport
   NewtonSolver::follow(
-    const double from,
-    const double to,
-    double      &increment,
+    const double         from,
+    const double         to,
+    double              &increment,
     const std::function<std::vector<std::pair<types::global_dof_index, double>>(
-      double)>  &apply_load)
+      double)>          &apply_load,
+    const LoadDependence load_dependence)
   {
     LoadPathReport report;
     const double   path     = to - from;
@@ -523,6 +527,22 @@ namespace ssc
           }
         else
           {
+            // The first update of an increment solves with the tangent of
+            // the converged state and a right-hand side that scales with
+            // the increment: if CG fails on it, it fails on any smaller
+            // increment too (the absolute floors of its tolerance lie far
+            // below the smallest increment allowed), and cutting would only
+            // crawl.
+            AssertThrow(!(newton.linear_failure_at_start &&
+                          load_dependence == LoadDependence::right_hand_side),
+                        ExcMessage(
+                          "Newton's method failed at load " +
+                          std::to_string(position) + " (" + newton.failure +
+                          ") on the first update of the increment. Its "
+                          "tangent is that of the converged state whatever "
+                          "the increment, so a smaller increment cannot "
+                          "help. (Poisson's ratios near 0.5 make the "
+                          "tangent hard for the AMG-preconditioned CG.)"));
             // back to the last converged state, with half the increment
             elasticity.set_solution(start);
             apply_load(position);

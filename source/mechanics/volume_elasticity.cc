@@ -576,14 +576,14 @@ namespace ssc
   LinearSolveReport
   VolumeElasticity::solve_newton_update(const double forcing,
                                         const double absolute_floor,
-                                        const double acceptable)
+                                        const double acceptable_residual)
   {
     newton_update = 0;
     return solve_linear_system(newton_update,
                                increment_constraints,
                                forcing,
                                absolute_floor,
-                               acceptable);
+                               acceptable_residual);
   }
 
 
@@ -1324,7 +1324,7 @@ namespace ssc
     const AffineConstraints<double> &solution_constraints,
     const double                     relative_tolerance,
     const double                     absolute_floor,
-    const double                     acceptable)
+    const double                     acceptable_residual)
   {
     TimerOutput::Scope t(timer, "solve");
     setup_preconditioner();
@@ -1365,7 +1365,7 @@ namespace ssc
       {
         // the solver's last iterate stays in the solution
         report.reached_target = false;
-        if (!(e.last_residual <= acceptable * rhs_norm))
+        if (!(e.last_residual <= acceptable_residual))
           {
             std::ostringstream message;
             message << "CG did not converge in " << e.last_step

@@ -152,7 +152,11 @@ namespace ssc
           {
             Timer                step_timer(mpi_communicator, true);
             const LoadPathReport report =
-              newton.follow(position, fraction, increment, apply_growth);
+              newton.follow(position,
+                            fraction,
+                            increment,
+                            apply_growth,
+                            LoadDependence::tangent);
             position = fraction;
             linear_iterations.push_back(report.linear_iterations);
             newton_iterations.push_back(report.newton_iterations);

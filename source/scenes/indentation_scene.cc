@@ -364,7 +364,11 @@ namespace ssc
           {
             Timer                step_timer(mpi_communicator, true);
             const LoadPathReport report =
-              newton.follow(position, loads[step], increment, apply_load);
+              newton.follow(position,
+                            loads[step],
+                            increment,
+                            apply_load,
+                            LoadDependence::right_hand_side);
             position = loads[step];
             double force;
             {

@@ -21,6 +21,19 @@ namespace ssc
     unsigned int        linear_iterations = 0;
     std::vector<double> residuals; ///< l2 norm before each iteration
     std::string         failure;   ///< why it did not converge
+    /// the linear solver failed on the first update (the tangent of the
+    /// state the increment starts from)
+    bool linear_failure_at_start = false;
+  };
+
+  /// How the load parameter of NewtonSolver::follow() enters the problem.
+  enum class LoadDependence
+  {
+    /// forces and prescribed displacements: the tangent at the start of an
+    /// increment is that of the converged state, whatever the increment
+    right_hand_side,
+    /// growth: the tangent changes with the load parameter
+    tangent
   };
 
   /// What following the load to one target did.
@@ -72,6 +85,9 @@ namespace ssc
      * that a solve crawling in tiny increments stops. @p apply_load
      * sets the load for a parameter value and returns the point loads.
      * @p increment is the first increment and returns the last accepted one.
+     * Where the load enters the right-hand side only (@p load_dependence),
+     * a linear solver failing on an increment's first update is an error
+     * at once: a smaller increment has the same tangent.
      */
     LoadPathReport
     follow(const double from,
@@ -79,7 +95,8 @@ namespace ssc
            double      &increment,
            const std::function<
              std::vector<std::pair<types::global_dof_index, double>>(double)>
-             &apply_load);
+                               &apply_load,
+           const LoadDependence load_dependence);
 
   private:
     /// What a line search found: whether a step is accepted, the step and

@@ -223,13 +223,15 @@ namespace ssc
     /// @p absolute_floor (N): near a converged state the relative target
     /// can fall below what round-off lets CG reach, while Newton only needs
     /// the update to be well inside its own tolerance. If CG reaches its
-    /// iteration limit with the residual below @p acceptable times the
-    /// right-hand side, the update is kept (it is still an inexact Newton
-    /// step) instead of failing.
+    /// iteration limit with the residual below @p acceptable_residual (N),
+    /// the update is kept (it is still an inexact Newton step: the caller
+    /// passes the largest forcing term times the right-hand side, or its
+    /// own tolerance, which the linearised residual then already meets)
+    /// instead of failing.
     LinearSolveReport
-    solve_newton_update(const double forcing        = 0.,
-                        const double absolute_floor = 0.,
-                        const double acceptable     = 0.);
+    solve_newton_update(const double forcing             = 0.,
+                        const double absolute_floor      = 0.,
+                        const double acceptable_residual = 0.);
 
     /**
      * The Newton update as a trust-region step (truncated_cg(): Steihaug-
@@ -403,13 +405,13 @@ namespace ssc
     /// @p solution (a warm start), to @p relative_tolerance (at least the
     /// linear solver's) but not below @p absolute_floor, then the
     /// constraints applied; at the iteration limit an error unless the
-    /// residual is below @p acceptable times the right-hand side.
+    /// residual is below @p acceptable_residual (N).
     LinearSolveReport
     solve_linear_system(TrilinosWrappers::MPI::Vector   &solution,
                         const AffineConstraints<double> &solution_constraints,
-                        const double relative_tolerance = 0.,
-                        const double absolute_floor     = 0.,
-                        const double acceptable         = 0.);
+                        const double relative_tolerance  = 0.,
+                        const double absolute_floor      = 0.,
+                        const double acceptable_residual = 0.);
 
     BackgroundMesh             &mesh;
     const LayerStack           &layers;
