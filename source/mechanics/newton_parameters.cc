@@ -35,7 +35,7 @@ namespace ssc
       "Both searches back off from inverted cells.");
     prm.declare_entry(
       "Globalisation",
-      "line search",
+      "hybrid",
       Patterns::Selection("line search|trust region|hybrid"),
       "How Newton's method reaches a solution from far away. line search: "
       "the Line search along each update, and where it finds no decrease "
@@ -47,8 +47,10 @@ namespace ssc
       "radius, accepted if the energy (integrated from the residual by "
       "Simpson's rule) falls by at least 5 % of the model's prediction; "
       "the radius shrinks after poor steps and grows after good ones on "
-      "its boundary. hybrid: the line search, and trust-region steps for "
-      "the rest of the increment once it has found no decrease. Trust-"
+      "its boundary. hybrid (the default, the most robust on the forearm "
+      "indentation and the hard cases of benchmarks/): the line search, "
+      "and trust-region steps for the rest of the increment once it has "
+      "found no decrease. Trust-"
       "region steps that end on the radius or are rejected count against "
       "Continuation iterations, the others (Newton steps) against Max "
       "iterations. While prescribed displacements are still to be "
@@ -89,17 +91,19 @@ namespace ssc
       "Continuation iterations",
       "100",
       Patterns::Integer(0, 10000),
-      "When the line search finds no decrease (past a stability limit, "
-      "where the tangent is indefinite), Newton's method continues with "
-      "the tangent shifted by a multiple of its diagonal (pseudo-transient "
-      "continuation) for at most this many iterations per increment; 0 "
-      "turns it off and cuts the increment instead. With trust-region "
-      "steps (Globalisation), the most steps per increment that end on "
-      "the radius or are rejected.");
+      "With Globalisation = line search: when the line search finds no "
+      "decrease (past a stability limit, where the tangent is "
+      "indefinite), Newton's method continues with the tangent shifted by "
+      "a multiple of its diagonal (pseudo-transient continuation) for at "
+      "most this many iterations per increment; 0 turns it off and cuts "
+      "the increment instead. With trust-region steps (trust region, "
+      "hybrid), the most steps per increment that end on the radius or are "
+      "rejected.");
     prm.declare_entry("Continuation shift",
                       "0.1",
                       Patterns::Double(0),
-                      "First shift of the pseudo-transient continuation, as "
+                      "First shift of the pseudo-transient continuation "
+                      "(Globalisation = line search), as "
                       "a multiple of the tangent's diagonal; it then "
                       "follows the residual (switched evolution "
                       "relaxation). Newton's method takes over again once "

@@ -37,7 +37,7 @@ namespace ssc
     unsigned int  max_iterations          = 25;
     double        relative_tolerance      = 1e-8;
     double        absolute_tolerance      = 1e-12;
-    Globalisation globalisation           = Globalisation::line_search;
+    Globalisation globalisation           = Globalisation::hybrid;
     LineSearch    line_search             = LineSearch::energy;
     unsigned int  max_line_search         = 8;
     unsigned int  initial_steps           = 4;
