@@ -139,6 +139,10 @@ main(int argc, char **argv)
           "    set Material model = neo-Hookean\n  end\nend\n"
           "subsection Elasticity\n  set Volumetric stabilisation = 0.02\n"
           "end\n");
+  check("acceptable forcing term below the largest one",
+        std::string(valid_stack) +
+          "subsection Nonlinear solver\n  set Max forcing term = 0.2\n"
+          "  set Acceptable forcing term = 0.05\nend\n");
   check("unknown material model",
         std::string(valid_stack) +
           "subsection Layer stack\n  subsection fat\n"

@@ -53,9 +53,9 @@ namespace ssc
                       Patterns::Integer(1),
                       "CG iteration limit. Reaching it is an error, but "
                       "for a Newton update whose residual is already below "
-                      "Nonlinear solver/Max forcing term times the right-"
-                      "hand side or Newton's own tolerance: that update is "
-                      "kept as an inexact step.");
+                      "Nonlinear solver/Acceptable forcing term times the "
+                      "right-hand side or Newton's own tolerance: that "
+                      "update is kept as an inexact step.");
     prm.declare_entry("Rigid body modes",
                       "true",
                       Patterns::Bool(),

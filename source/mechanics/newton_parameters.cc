@@ -125,6 +125,18 @@ namespace ssc
                       "Largest relative tolerance of a Newton update with "
                       "the Eisenstat-Walker forcing term (also that of the "
                       "first update of every increment).");
+    prm.declare_entry(
+      "Acceptable forcing term",
+      "0.1",
+      Patterns::Double(0, 0.9),
+      "A Newton update that CG could not bring to its target within "
+      "Elasticity/Linear solver/Max iterations is still taken if CG has "
+      "reduced its residual by this factor (an inexact Newton step: the "
+      "nonlinear residual then still contracts by about this factor) or "
+      "has met Newton's own tolerance; otherwise the increment fails. "
+      "Nearly incompressible layers (Poisson's ratio 0.4999) make CG "
+      "stall at a few per cent. With the fixed forcing term only Newton's "
+      "tolerance counts. At least Max forcing term.");
     prm.leave_subsection();
   }
 
@@ -157,6 +169,12 @@ namespace ssc
                                 ForcingTerm::fixed :
                                 ForcingTerm::eisenstat_walker;
     max_forcing_term        = prm.get_double("Max forcing term");
+    acceptable_forcing_term = prm.get_double("Acceptable forcing term");
+    AssertThrow(acceptable_forcing_term >= max_forcing_term,
+                ExcMessage("Nonlinear solver/Acceptable forcing term (" +
+                           prm.get("Acceptable forcing term") +
+                           ") must be at least Max forcing term (" +
+                           prm.get("Max forcing term") + ")."));
     AssertThrow(continuation_iterations == 0 || continuation_shift > 0,
                 ExcMessage("Nonlinear solver/Continuation shift must be "
                            "positive when Continuation iterations is not 0."));

@@ -305,16 +305,18 @@ namespace ssc
             try
               {
                 // An update CG could not bring to its target is still an
-                // inexact Newton step if it reached the largest forcing term,
-                // or if its linearised residual is already within Newton's
-                // tolerance (near the solution CG's own target, a tenth of
-                // that, can lie below what round-off lets it reach).
+                // inexact Newton step if it has reduced the residual by the
+                // acceptable forcing term, or if its linearised residual is
+                // already within Newton's tolerance (near the solution CG's
+                // own target, a tenth of that, can lie below what it reaches
+                // on an ill-conditioned tangent).
                 const double rhs_norm = elasticity.get_system_rhs().l2_norm();
                 const LinearSolveReport linear = elasticity.solve_newton_update(
                   forcing,
                   0.1 * target,
-                  std::max(inexact ? parameters.max_forcing_term * rhs_norm :
-                                     0.,
+                  std::max(inexact ?
+                             parameters.acceptable_forcing_term * rhs_norm :
+                             0.,
                            target));
                 report.linear_iterations += linear.iterations;
                 if (!linear.reached_target && verbose)

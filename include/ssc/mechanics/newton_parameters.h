@@ -49,6 +49,8 @@ namespace ssc
     double        continuation_shift      = 0.1;
     ForcingTerm   forcing_term            = ForcingTerm::eisenstat_walker;
     double        max_forcing_term        = 1e-2;
+    /// relative residual at which an update CG could not finish is kept
+    double acceptable_forcing_term = 0.1;
 
     static void
     declare_parameters(ParameterHandler &prm);
