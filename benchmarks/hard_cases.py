@@ -14,9 +14,10 @@ Writes benchmarks/results/hard_cases.csv and prints a Markdown table.
 (--jobs 2 runs two cases at a time on the 2 cores: their wall times then
 include the sharing. --cases runs the cases of these indices (from 0, in
 the order of CASES) and replaces their rows in the CSV, the others stay.
-SSC_BUILD_DIR chooses the build, as for ssc.sh.)
+SSC_BUILD_DIR chooses the build, as for ssc.sh. The run folders, with
+their log.txt, stay in output/hard_cases/caseI/.)
 """
-import argparse, concurrent.futures, csv, json, os, subprocess, tempfile, time
+import argparse, concurrent.futures, csv, json, os, subprocess, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
@@ -66,6 +67,9 @@ CASES = [
      {**Q2, "Punch/Contact": "frictionless"}),
     ("nu = 0.4999 in every layer, Q2 elements",
      {**Q2, **every_layer("Poisson's ratio", "0.4999")}),
+    ("Q2 elements, frictionless, one refinement towards the punch edge",
+     {**Q2, "Punch/Contact": "frictionless",
+      "Mesh/Region of interest/Local refinements": "1"}),
 ]
 FIELDS = ["case", "converged", "message", "force_N", "depth_mm",
           "newton_iterations", "linear_iterations", "load_cuts",
@@ -125,14 +129,16 @@ def main():
                         default=list(range(len(CASES))))
     args = parser.parse_args()
     os.makedirs(OUT, exist_ok=True)
-    with tempfile.TemporaryDirectory() as folder:
-        with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-            futures = [pool.submit(run, *CASES[index], folder, index)
-                       for index in args.cases]
-            new_rows = []
-            for future in futures:
-                new_rows.append(future.result())
-                print(new_rows[-1], flush=True)
+    # the run folders, with their logs, stay for a look at what a case did
+    folder = os.path.join(ROOT, "output", "hard_cases")
+    os.makedirs(folder, exist_ok=True)
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        futures = [pool.submit(run, *CASES[index], folder, index)
+                   for index in args.cases]
+        new_rows = []
+        for future in futures:
+            new_rows.append(future.result())
+            print(new_rows[-1], flush=True)
     rows = merged_rows(new_rows)
     with open(os.path.join(OUT, "hard_cases.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=FIELDS)

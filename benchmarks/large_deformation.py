@@ -21,14 +21,13 @@ Writes benchmarks/results/large_deformation.csv and .png.
 --formulation displacement runs every law with the plain Q1 displacement
 formulation instead (large_deformation_displacement.csv and .png): it
 locks at nu = 0.49 (15-17 % shallower) and so reaches 1.8 N at about
-10 mm, before the depth of about 11.2 mm where the mixed runs stop on
-this mesh (and where the displacement formulation crawls as well under
-displacement control; benchmarks/README.md).
+10 mm, before the depth of about 11 mm where the mixed tangent turns
+indefinite on this mesh (benchmarks/README.md).
 
 --degree 2 runs Q2 elements (large_deformation_q2.csv and .png; with the
 mixed formulation Q2 with the mean dilatation, Q2-P0, which is inf-sup
-stable); use it with --refinements 0 (257k DoFs). There the runs pass the
-depth of about 11.2 mm at which the Q1 mixed runs stop (benchmarks/README.md).
+stable); use it with --refinements 0 (257k DoFs). Bonded, the Q2 runs
+pass that depth without negative curvature (benchmarks/README.md).
 
 --globalisation chooses Nonlinear solver/Globalisation (default hybrid:
 the energy line search, and trust-region steps where it finds no
