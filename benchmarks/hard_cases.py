@@ -2,7 +2,9 @@
 """Hard-case suite of the finite-strain solver: each case runs the coarse
 forearm indentation of benchmarks/hard_cases.prm (neo-Hookean layers unless
 the case says otherwise, mean dilatation, tension-field septa, tension-only
-ligaments, edge contact, force control to 1.8 N) with a few overrides and
+ligaments, edge contact, force control to 1.8 N, Newton's method with the
+default globalisation: the energy line search, trust-region steps where it
+finds no decrease) with a few overrides and
 reports whether it converged -- or the clear error it stopped with -- and
 the cost: load steps, Newton and CG iterations, load cuts, wall time on one
 core.
@@ -70,6 +72,9 @@ CASES = [
     ("Q2 elements, frictionless, one refinement towards the punch edge",
      {**Q2, "Punch/Contact": "frictionless",
       "Mesh/Region of interest/Local refinements": "1"}),
+    ("one load step of 1.8 N, line search and continuation only",
+     {"Punch/Forces": "1.8", "Nonlinear solver/Initial steps": "1",
+      "Nonlinear solver/Globalisation": "line search"}),
 ]
 FIELDS = ["case", "converged", "message", "force_N", "depth_mm",
           "newton_iterations", "linear_iterations", "load_cuts",
