@@ -1,9 +1,13 @@
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <ssc/scenes/scene_run.h>
 
+#include <algorithm>
 #include <numeric>
 #include <sstream>
+#include <utility>
 
 namespace ssc
 {
@@ -40,13 +44,14 @@ namespace ssc
       return (peak ? memory.VmHWM : memory.VmRSS) / 1024.;
     }
 
-    const char *phases[] = {"mesh",
-                            "microstructure",
-                            "embedding",
-                            "setup",
-                            "assembly",
-                            "solve",
-                            "output"};
+    const char            *phases[] = {"mesh",
+                                       "microstructure",
+                                       "embedding",
+                                       "setup",
+                                       "assembly",
+                                       "solve",
+                                       "output"};
+    constexpr unsigned int n_phases = sizeof(phases) / sizeof(phases[0]);
   } // namespace
 
 
@@ -59,7 +64,12 @@ namespace ssc
     , run_output(parameters.run.output_directory + "/" + parameters.run.name,
                  mpi_communicator,
                  true)
-    , phase_timer(mpi_communicator,
+    // each rank times its own phases (MPI_COMM_SELF): a TimerOutput on the
+    // scene's communicator would synchronise every section and, destroyed
+    // while an error propagates, print a banner about the skipped
+    // synchronisation before the error message; phase_wall_times() takes
+    // the slowest rank instead
+    , phase_timer(MPI_COMM_SELF,
                   run_output.progress(),
                   TimerOutput::never,
                   TimerOutput::wall_times)
@@ -78,14 +88,31 @@ namespace ssc
   }
 
 
+  std::vector<double>
+  SceneRun::phase_wall_times() const
+  {
+    const auto local =
+      phase_timer.get_summary_data(TimerOutput::total_wall_time);
+    std::vector<double> wall(n_phases, -1.);
+    for (unsigned int i = 0; i < n_phases; ++i)
+      if (local.count(phases[i]))
+        wall[i] = local.at(phases[i]);
+    std::vector<double> slowest(n_phases);
+    Utilities::MPI::max(make_array_view(std::as_const(wall)),
+                        mpi_communicator,
+                        make_array_view(slowest));
+    return slowest;
+  }
+
+
   nlohmann::ordered_json
   SceneRun::summary(const types::global_dof_index  dofs,
                     const types::global_cell_index cells) const
   {
-    auto wall = phase_timer.get_summary_data(TimerOutput::total_wall_time);
-    nlohmann::ordered_json timings;
-    for (const char *phase : phases)
-      timings[phase] = wall.count(phase) ? wall[phase] : 0.;
+    const std::vector<double> wall = phase_wall_times();
+    nlohmann::ordered_json    timings;
+    for (unsigned int i = 0; i < n_phases; ++i)
+      timings[phases[i]] = std::max(wall[i], 0.);
     timings["total"] = total_timer.wall_time();
 
     nlohmann::ordered_json summary;
@@ -114,13 +141,13 @@ namespace ssc
   {
     if (parameters.run.test_mode)
       return;
-    auto wall = phase_timer.get_summary_data(TimerOutput::total_wall_time);
+    const std::vector<double> wall = phase_wall_times();
     pcout() << "Wall time: " << total_timer.wall_time() << " s (";
     bool first = true;
-    for (const char *phase : phases)
-      if (wall.count(phase))
+    for (unsigned int i = 0; i < n_phases; ++i)
+      if (wall[i] >= 0.)
         {
-          pcout() << (first ? "" : ", ") << phase << ' ' << wall[phase];
+          pcout() << (first ? "" : ", ") << phases[i] << ' ' << wall[i];
           first = false;
         }
     pcout() << ")" << std::endl

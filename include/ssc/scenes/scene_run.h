@@ -61,16 +61,22 @@ namespace ssc
 
     /// summary.json with the keys every scene has (embedded counts and
     /// solver statistics zero until the scene sets them); the scene adds its
-    /// own results.
+    /// own results. Collective: phase times are the slowest rank's.
     nlohmann::ordered_json
     summary(const types::global_dof_index  dofs,
             const types::global_cell_index cells) const;
 
-    /// One line with the wall time per phase (not in test mode).
+    /// One line with the wall time per phase, the slowest rank's (not in
+    /// test mode). Collective.
     void
     print_wall_times();
 
   private:
+    /// Wall time of each phase, the slowest rank's; -1 where no rank
+    /// entered the phase. Collective.
+    std::vector<double>
+    phase_wall_times() const;
+
     const Parameters &parameters;
     MPI_Comm          mpi_communicator;
     std::string       scene_name;
