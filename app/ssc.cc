@@ -2,9 +2,9 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <ssc/application.h>
-
 #include <iostream>
+
+#include <ssc/application.h>
 
 int
 main(int argc, char **argv)

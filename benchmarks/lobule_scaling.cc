@@ -9,11 +9,11 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <ssc/microstructure/clipped_voronoi.h>
-
 #include <cmath>
 #include <iostream>
 #include <random>
+
+#include <ssc/microstructure/clipped_voronoi.h>
 
 int
 main(int argc, char **argv)

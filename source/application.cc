@@ -1,13 +1,13 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <sstream>
+
 #include <ssc/application.h>
 #include <ssc/parameters.h>
 #include <ssc/scenes/geometry_scene.h>
 #include <ssc/scenes/growth_scene.h>
 #include <ssc/scenes/indentation_scene.h>
-
-#include <sstream>
 
 namespace ssc
 {
@@ -112,12 +112,18 @@ namespace ssc
               out << file << ": parameters are valid" << std::endl;
             return 0;
           }
-        if (parameters.run.scene == "indentation")
-          IndentationScene(parameters, mpi_communicator).run();
-        else if (parameters.run.scene == "growth")
-          GrowthScene(parameters, mpi_communicator).run();
-        else if (parameters.run.scene == "geometry")
-          GeometryScene(parameters, mpi_communicator).run();
+        switch (parameters.run.scene)
+          {
+            case SceneKind::indentation:
+              IndentationScene(parameters, mpi_communicator).run();
+              break;
+            case SceneKind::growth:
+              GrowthScene(parameters, mpi_communicator).run();
+              break;
+            case SceneKind::geometry:
+              GeometryScene(parameters, mpi_communicator).run();
+              break;
+          }
         return 0;
       }
     catch (const ExceptionBase &e)

@@ -1,76 +1,16 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <ssc/microstructure/ligaments.h>
-#include <ssc/parameters.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include <ssc/mechanics/elasticity_parameters.h>
+#include <ssc/microstructure/ligaments.h>
+#include <ssc/parameters.h>
+
 namespace ssc
 {
-  void
-  RunParameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Run");
-    prm.declare_entry("Scene",
-                      "indentation",
-                      Patterns::Selection("indentation|growth|geometry"),
-                      "What to simulate. indentation: a rigid flat "
-                      "cylindrical punch at the patch centre, pressed to "
-                      "prescribed depths or with prescribed forces (section "
-                      "Punch), with the microstructure embedded when it is "
-                      "switched on. growth: fat lobules grow by a given "
-                      "volume (section Growth: cellulite, fat injection), "
-                      "the skin elevation is measured. geometry: build the "
-                      "layered patch and its microstructure (lobules, septa, "
-                      "ligaments) and write them, without mechanics.");
-    prm.declare_entry("Name",
-                      "indentation",
-                      Patterns::Anything(),
-                      "Name of the run: results go to <Output directory>/"
-                      "<Name>/.");
-    prm.declare_entry("Output directory",
-                      "output",
-                      Patterns::Anything(),
-                      "Folder that holds one subfolder per run; relative "
-                      "paths are taken from the current working directory.");
-    prm.declare_entry("Write fields",
-                      "true",
-                      Patterns::Bool(),
-                      "Write the VTU/PVD field files (volume, septa, "
-                      "ligaments); false keeps only the tables and "
-                      "summary.json (benchmarks).");
-    prm.declare_entry("Test mode",
-                      "false",
-                      Patterns::Bool(),
-                      "Print only what is deterministic (no timings, no "
-                      "iteration counts), for reference-output tests.");
-    prm.leave_subsection();
-  }
-
-
-  void
-  RunParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Run");
-    scene            = prm.get("Scene");
-    name             = Utilities::trim(prm.get("Name"));
-    output_directory = Utilities::trim(prm.get("Output directory"));
-    test_mode        = prm.get_bool("Test mode");
-    write_fields     = prm.get_bool("Write fields");
-    prm.leave_subsection();
-    AssertThrow(!name.empty() && name.find('/') == std::string::npos &&
-                  name != "." && name != "..",
-                ExcMessage("Run/Name = '" + name +
-                           "' must be a plain folder name (not empty, no "
-                           "'/')."));
-    AssertThrow(!output_directory.empty(),
-                ExcMessage("Run/Output directory must not be empty."));
-  }
-
-
   namespace
   {
     /// Applies one "Section/Subsection/Name=value" override to @p prm.
@@ -178,17 +118,18 @@ namespace ssc
 
 
   void
-  Parameters::declare(ParameterHandler &prm, const std::vector<std::string> &l)
+  Parameters::add_parameters(ParameterHandler               &handler,
+                             const std::vector<std::string> &layer_names)
   {
-    RunParameters::declare_parameters(prm);
-    LayerStack::declare_parameters(prm, l);
-    MeshParameters::declare_parameters(prm);
-    ElasticityParameters::declare_parameters(prm);
-    PunchParameters::declare_parameters(prm);
-    GrowthParameters::declare_parameters(prm);
-    MicrostructureParameters::declare_parameters(prm);
-    EmbeddedParameters::declare_parameters(prm);
-    NewtonParameters::declare_parameters(prm);
+    run.add_parameters(handler);
+    layers.add_parameters(handler, layer_names);
+    mesh.add_parameters(handler);
+    elasticity.add_parameters(handler);
+    punch.add_parameters(handler);
+    growth.add_parameters(handler);
+    microstructure.add_parameters(handler);
+    embedded.add_parameters(handler);
+    newton.add_parameters(handler);
   }
 
 
@@ -202,39 +143,58 @@ namespace ssc
                              "': no such file."));
 
     // First pass: only the layer list matters, everything else is skipped.
-    ParameterHandler first;
-    declare(first, {});
-    if (!file.empty())
-      parse_with_includes(first, file, /*skip_undefined=*/true);
-    for (const auto &o : overrides)
-      try
-        {
-          apply_override(first, o);
-        }
-      catch (...)
-        {
-          // reported by the strict second pass
-        }
-    const std::vector<std::string> names = LayerStack::parse_layer_list(first);
+    std::vector<std::string> names;
+    {
+      ParameterHandler first;
+      LayerStack       list;
+      list.add_layer_list(first);
+      if (!file.empty())
+        parse_with_includes(first, file, /*skip_undefined=*/true);
+      for (const auto &o : overrides)
+        try
+          {
+            apply_override(first, o);
+          }
+        catch (...)
+          {
+            // reported by the strict second pass
+          }
+      names = list.layer_names();
+    }
 
-    // Second pass: strict.
+    // Second pass: strict, into members that start from their defaults.
     prm.clear();
-    declare(prm, names);
+    run            = RunParameters();
+    layers         = LayerStack();
+    mesh           = MeshParameters();
+    elasticity     = ElasticityParameters();
+    punch          = PunchParameters();
+    growth         = GrowthParameters();
+    microstructure = MicrostructureParameters();
+    embedded       = EmbeddedParameters();
+    newton         = NewtonParameters();
+    add_parameters(prm, names);
     if (!file.empty())
       parse_with_includes(prm, file, /*skip_undefined=*/false);
     for (const auto &o : overrides)
       apply_override(prm, o);
-
-    run.parse_parameters(prm);
-    layers.parse_parameters(prm);
-    mesh.parse_parameters(prm);
-    elasticity.parse_parameters(prm);
-    punch.parse_parameters(prm);
-    growth.parse_parameters(prm);
-    microstructure.parse_parameters(prm);
-    embedded.parse_parameters(prm);
-    newton.parse_parameters(prm);
+    finalise();
     check_consistency();
+  }
+
+
+  void
+  Parameters::finalise()
+  {
+    run.check();
+    layers.finalise();
+    mesh.check();
+    elasticity.check();
+    punch.check();
+    growth.check();
+    microstructure.check();
+    embedded.check();
+    newton.check();
   }
 
 
@@ -251,12 +211,22 @@ namespace ssc
                            "method: give at least one layer a nonlinear "
                            "Material model (corotational or neo-Hookean)."));
     AssertThrow(elasticity.volumetric_stabilisation == 0 ||
-                  (layers.nonlinear() &&
-                   elasticity.formulation == Formulation::mixed),
+                  (layers.nonlinear() && elasticity.n_pressure_modes() > 0 &&
+                   elasticity.formulation != Formulation::enhanced),
                 ExcMessage("Elasticity/Volumetric stabilisation acts on the "
-                           "mean dilatation of finite-strain layers: it "
-                           "needs Formulation = mixed and a nonlinear "
-                           "Material model."));
+                           "projected dilatation of finite-strain layers: it "
+                           "needs Formulation = mixed or mean dilatation and "
+                           "a nonlinear Material model."));
+    if (elasticity.formulation == Formulation::enhanced)
+      for (unsigned int l = 0; l < layers.n_layers(); ++l)
+        AssertThrow(layers.layer(l).model == MaterialModel::linear,
+                    ExcMessage("Elasticity/Formulation = enhanced is for the "
+                               "linear material model only, but Layer "
+                               "stack/" +
+                               layers.layer(l).name + "/Material model = " +
+                               to_string(layers.layer(l).model) +
+                               ": use mixed or mean dilatation with "
+                               "finite-strain layers."));
     AssertThrow(!punch.edge_contact || layers.nonlinear(),
                 ExcMessage("Punch/Edge contact needs Newton's method: give "
                            "at least one layer a nonlinear Material model "
@@ -282,10 +252,10 @@ namespace ssc
         if (microstructure.ligaments)
           place_ligaments(layers, rectangle, microstructure);
       }
-    if (run.scene == "growth")
+    if (run.scene == SceneKind::growth)
       for (const std::string &name : growth.layers)
         layers.index_of(name, "Growth/Layers"); // throws if unknown
-    if (run.scene == "indentation")
+    if (run.scene == SceneKind::indentation)
       {
         const double smallest =
           std::min(mesh.patch_length_x, mesh.patch_length_y);
@@ -302,9 +272,10 @@ namespace ssc
   void
   Parameters::print_defaults(std::ostream &out)
   {
-    ParameterHandler defaults;
-    declare(defaults, {"skin", "SAT", "SM", "DAT", "deep"});
-    defaults.print_parameters(out, ParameterHandler::PRM);
+    Parameters       defaults;
+    ParameterHandler handler;
+    defaults.add_parameters(handler, {"skin", "SAT", "SM", "DAT", "deep"});
+    handler.print_parameters(out, ParameterHandler::PRM);
   }
 
 

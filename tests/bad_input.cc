@@ -1,11 +1,11 @@
 // Bad input never crashes: each case gives exit status 1 and one message
 // that names the parameter (and file and line where the parser knows them).
 
-#include <ssc/application.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <ssc/application.h>
 
 #include "tests.h"
 
@@ -18,6 +18,7 @@ subsection Layer stack
     set Thickness = 1.5
   end
   subsection fat
+    set Kind      = SAT
     set Thickness = 4
   end
 end
@@ -81,6 +82,8 @@ main(int argc, char **argv)
         "subsection Layer stack\n  set Layers = skin\n  subsection skin\n"
         "    set Poisson's ratio = 0.7\n  end\nend\n");
   check("no layers", "subsection Layer stack\n  set Layers =\nend\n");
+  check("a layer named other than a kind, without a Kind",
+        "subsection Layer stack\n  set Layers = skin, fat\nend\n");
   check("duplicate layer",
         "subsection Layer stack\n  set Layers = fat, fat\nend\n");
   check("negative thickness",
@@ -108,18 +111,24 @@ main(int argc, char **argv)
     "  subsection SAT\n    set Lobule diameter = 0\n  end\nend\n";
   check("lobules but no lobule diameter",
         geometry + "subsection Microstructure\n  set Lobules = true\nend\n");
-  check("region of interest outside the patch",
-        geometry + "subsection Microstructure\n  set Ligaments = true\n"
-                   "  subsection Region of interest\n    set Shape = box\n"
-                   "    set Centre x = 100\n  end\nend\n");
-  check("ligament target missing",
-        geometry + "subsection Microstructure\n  set Ligaments = true\n"
-                   "  subsection Ligaments\n    set Target = SM\n  end\n"
-                   "end\n");
-  check("negative ligament density",
-        geometry + "subsection Microstructure\n  set Ligaments = true\n"
-                   "  subsection Ligaments\n    set Target = deep\n"
-                   "    set Density = 1 - 0.1*x\n  end\nend\n");
+  check(
+    "region of interest outside the patch",
+    geometry +
+      "subsection Microstructure\n  subsection Ligaments\n    set Enabled = true\n  end\n"
+      "  subsection Region of interest\n    set Shape = box\n"
+      "    set Centre x = 100\n  end\nend\n");
+  check(
+    "ligament target missing",
+    geometry +
+      "subsection Microstructure\n  subsection Ligaments\n    set Enabled = true\n  end\n"
+      "  subsection Ligaments\n    set Target = SM\n  end\n"
+      "end\n");
+  check(
+    "negative ligament density",
+    geometry +
+      "subsection Microstructure\n  subsection Ligaments\n    set Enabled = true\n  end\n"
+      "  subsection Ligaments\n    set Target = deep\n"
+      "    set Density = 1 - 0.1*x\n  end\nend\n");
   check("tension-field septa with linear layers",
         std::string(valid_stack) +
           "subsection Embedded\n  subsection Septa\n"

@@ -5,12 +5,12 @@
 // on faces, edges and corners of the box -- give valid tessellations.
 // Coinciding seeds are reported as an error.
 
-#include <ssc/microstructure/clipped_voronoi.h>
-
 #include <cmath>
 #include <iomanip>
 #include <map>
 #include <random>
+
+#include <ssc/microstructure/clipped_voronoi.h>
 
 #include "tests.h"
 

@@ -1,9 +1,9 @@
 // DiskFittingMap: the square |p|_inf = a goes onto the circle r = a, points
 // beyond 2a stay put, and inverse(forward(p)) = p everywhere.
 
-#include <ssc/disk_fitting_map.h>
-
 #include <cmath>
+
+#include <ssc/mesh/disk_fitting_map.h>
 
 #include "tests.h"
 

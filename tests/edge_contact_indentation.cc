@@ -12,13 +12,14 @@
 // parallel assembly, not that case.)
 
 #include <nlohmann/json.hpp>
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
 
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+
+#include <ssc/parameters.h>
+#include <ssc/scenes/indentation_scene.h>
 
 #include "tests.h"
 

@@ -16,15 +16,15 @@
 
 #include <deal.II/grid/tria_description.h>
 
-#include <ssc/background_mesh.h>
-#include <ssc/embedding/clipped_quadrature.h>
-#include <ssc/embedding/point_locator.h>
-#include <ssc/mechanics/embedded_elasticity.h>
-#include <ssc/mechanics/volume_elasticity.h>
-
 #include <cmath>
 #include <iomanip>
 #include <random>
+
+#include <ssc/embedding/clipped_quadrature.h>
+#include <ssc/embedding/point_locator.h>
+#include <ssc/mechanics/elastic_system.h>
+#include <ssc/mechanics/embedded_stiffness.h>
+#include <ssc/mesh/background_mesh.h>
 
 #include "tests.h"
 
@@ -110,33 +110,37 @@ namespace
       , pcout(std::cout, false)
     {
       mesh.build();
-      elasticity = std::make_unique<ssc::VolumeElasticity>(
-        mesh, stack, parameters(), timer, pcout);
-      elasticity->setup_dofs();
-      locator = std::make_unique<ssc::PointLocator>(mesh.triangulation(),
-                                                    elasticity->get_mapping());
+      elasticity =
+        std::make_unique<ssc::ElasticSystem>(mesh, stack, parameters(), timer);
+      elasticity->field().distribute_dofs();
+      locator =
+        std::make_unique<ssc::PointLocator>(mesh.triangulation(),
+                                            elasticity->field().mapping());
     }
 
-    /// Reaction force F_x on the face x = 2 with @p embedded attached.
+    /// Reaction force F_x on the face x = 2 with @p embedded attached: a
+    /// membrane (E_m, nu = 0, t) or a cable (E_c, A).
     template <int dim>
     double
-    force_x(const Triangulation<dim, 3> &embedded, const ssc::EmbeddedKind kind)
+    force_x(const Triangulation<dim, 3> &embedded)
     {
-      ssc::VolumeElasticity elasticity_here(
-        mesh, stack, parameters(), timer, pcout);
-      elasticity_here.setup_dofs();
-      const ssc::EmbeddedMaterial material = {
-        kind == ssc::EmbeddedKind::membrane ? E_m : E_c,
-        0.,
-        kind == ssc::EmbeddedKind::membrane ? t : A};
-      double                        covered;
-      const ssc::EmbeddedElasticity contribution(
-        kind,
-        ssc::clipped_quadrature(embedded, *locator, 2, covered),
-        [material](types::material_id) { return material; },
-        elasticity_here.get_fe(),
-        elasticity_here.get_mapping(),
-        MPI_COMM_WORLD);
+      ssc::ElasticSystem elasticity_here(mesh, stack, parameters(), timer);
+      elasticity_here.field().distribute_dofs();
+      double     covered;
+      const auto quadrature =
+        ssc::clipped_quadrature(embedded, *locator, 2, covered);
+      const ssc::EmbeddedStiffness contribution =
+        dim == 2 ? ssc::EmbeddedStiffness(
+                     quadrature,
+                     ssc::MembraneLaw(ssc::IsotropicModuli(E_m, 0.), t, false),
+                     elasticity_here.field().fe(),
+                     elasticity_here.field().mapping(),
+                     MPI_COMM_WORLD) :
+                   ssc::EmbeddedStiffness(quadrature,
+                                          ssc::CableLaw(E_c, A, false),
+                                          elasticity_here.field().fe(),
+                                          elasticity_here.field().mapping(),
+                                          MPI_COMM_WORLD);
       elasticity_here.attach(contribution);
       const auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
       const auto pull = std::make_shared<Functions::ConstantFunction<3>>(
@@ -145,16 +149,15 @@ namespace
       xy.set(2, false);
       y.set(1, true);
       z.set(2, true);
-      elasticity_here.setup_system({{ssc::BoundaryId::x_min, xy, zero, {}},
-                                    {ssc::BoundaryId::x_max, xy, pull, {}},
-                                    {ssc::BoundaryId::y_min, y, zero, {}},
-                                    {ssc::BoundaryId::bottom, z, zero, {}}});
-      elasticity_here.assemble();
-      elasticity_here.solve();
+      elasticity_here.setup({{ssc::BoundaryId::x_min, xy, zero, {}},
+                             {ssc::BoundaryId::x_max, xy, pull, {}},
+                             {ssc::BoundaryId::y_min, y, zero, {}},
+                             {ssc::BoundaryId::bottom, z, zero, {}}});
+      elasticity_here.solve_linear();
       return elasticity_here.reaction(1)[0];
     }
 
-    ssc::VolumeElasticity &
+    ssc::ElasticSystem &
     volume()
     {
       return *elasticity;
@@ -187,17 +190,17 @@ namespace
     parameters()
     {
       static ssc::ElasticityParameters p;
-      p.tolerance      = 1e-13;
-      p.max_iterations = 2000;
+      p.linear_solver.tolerance      = 1e-13;
+      p.linear_solver.max_iterations = 2000;
       return p;
     }
 
-    ssc::LayerStack                        stack;
-    ssc::BackgroundMesh                    mesh;
-    TimerOutput                            timer;
-    ConditionalOStream                     pcout;
-    std::unique_ptr<ssc::VolumeElasticity> elasticity;
-    std::unique_ptr<ssc::PointLocator>     locator;
+    ssc::LayerStack                     stack;
+    ssc::BackgroundMesh                 mesh;
+    TimerOutput                         timer;
+    ConditionalOStream                  pcout;
+    std::unique_ptr<ssc::ElasticSystem> elasticity;
+    std::unique_ptr<ssc::PointLocator>  locator;
   };
 } // namespace
 
@@ -227,11 +230,11 @@ main(int argc, char **argv)
     membrane(on_faces, 0., 0., 4, 4);
     membrane(cutting, 0.3, 0., 4, 4);
     report("membrane on mesh faces",
-           block.force_x(on_faces, ssc::EmbeddedKind::membrane),
+           block.force_x(on_faces),
            t * 4 * E_m * eps,
            true);
     report("membrane cutting cells, edges on cell faces",
-           block.force_x(cutting, ssc::EmbeddedKind::membrane),
+           block.force_x(cutting),
            t * 4 * E_m * eps,
            true);
     const double alpha = 0.3;
@@ -241,7 +244,7 @@ main(int argc, char **argv)
         membrane(tilted, 0.1, alpha, n, n);
         report("membrane tilted by 0.3 rad, " + std::to_string(2 * n * n) +
                  " triangles",
-               block.force_x(tilted, ssc::EmbeddedKind::membrane),
+               block.force_x(tilted),
                t * 4 * E_m * eps * std::pow(std::cos(alpha), 3),
                true);
       }
@@ -251,11 +254,11 @@ main(int argc, char **argv)
     cable(on_edge, 0., -2., 0., 4);
     cable(cutting, 0.3, -1.7, 0., 4);
     report("cable along a mesh edge",
-           block.force_x(on_edge, ssc::EmbeddedKind::cable),
+           block.force_x(on_edge),
            E_c * A * eps,
            true);
     report("cable cutting cells, nodes on cell faces",
-           block.force_x(cutting, ssc::EmbeddedKind::cable),
+           block.force_x(cutting),
            E_c * A * eps,
            true);
     const double alpha = 0.3;
@@ -264,7 +267,7 @@ main(int argc, char **argv)
         Triangulation<1, 3> tilted;
         cable(tilted, 0.1, -1.7, alpha, n);
         report("cable tilted by 0.3 rad, " + std::to_string(n) + " segments",
-               block.force_x(tilted, ssc::EmbeddedKind::cable),
+               block.force_x(tilted),
                E_c * A * eps * std::pow(std::cos(alpha), 3),
                true);
       }
@@ -297,34 +300,35 @@ main(int argc, char **argv)
       }
     Triangulation<2, 3> disk;
     disk.create_triangulation(vertices, cells, SubCellData());
-    const ssc::EmbeddedMaterial   material = {E_m, 0.3, t};
-    double                        covered;
-    const ssc::EmbeddedElasticity membrane_stiffness(
-      ssc::EmbeddedKind::membrane,
+    double                       covered;
+    const ssc::EmbeddedStiffness membrane_stiffness(
       ssc::clipped_quadrature(disk, block.point_locator(), 3, covered),
-      [material](types::material_id) { return material; },
-      block.volume().get_fe(),
-      block.volume().get_mapping(),
+      ssc::MembraneLaw(ssc::IsotropicModuli(E_m, 0.3), t, false),
+      block.volume().field().fe(),
+      block.volume().field().mapping(),
       MPI_COMM_WORLD);
 
-    const auto        &fe     = block.volume().get_fe();
+    const auto        &fe     = block.volume().field().fe();
     const unsigned     n_dofs = fe.n_dofs_per_cell();
     FullMatrix<double> K(n_dofs, n_dofs);
     Vector<double>     rhs(n_dofs), u(n_dofs), r(n_dofs);
     double             largest_force = 0, largest_entry = 0;
     const auto        &support = fe.get_unit_support_points();
     for (const auto &cell :
-         block.volume().get_dof_handler().active_cell_iterators())
+         block.volume().field().dof_handler().active_cell_iterators())
       {
         K = 0;
-        membrane_stiffness.add_to_cell(cell, K, rhs);
+        r = 0;
+        u = 0;
+        membrane_stiffness.add_to_cell(
+          cell, u, ssc::Kinematics::small_strain, true, K, r);
         largest_entry = std::max(largest_entry, K.linfty_norm());
         for (unsigned int mode = 0; mode < 6; ++mode)
           {
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
                 const Point<3> x =
-                  block.volume().get_mapping().transform_unit_to_real_cell(
+                  block.volume().field().mapping().transform_unit_to_real_cell(
                     cell, support[i]);
                 const unsigned int c = fe.system_to_component_index(i).first;
                 if (mode < 3)

@@ -4,13 +4,13 @@
 // minus what lies inside; the lobule tessellation is untouched. Also: the
 // lobule locator finds, for the centroid of every lobule, that lobule.
 
-#include <ssc/microstructure/lobule_locator.h>
-#include <ssc/microstructure/microstructure.h>
-
 #include <algorithm>
 #include <cmath>
 #include <set>
 #include <tuple>
+
+#include <ssc/microstructure/lobule_locator.h>
+#include <ssc/microstructure/microstructure.h>
 
 #include "tests.h"
 

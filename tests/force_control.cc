@@ -5,12 +5,12 @@
 // embedded. The tied punch carries exactly the applied force (reaction from
 // the residual).
 
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
-
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+
+#include <ssc/parameters.h>
+#include <ssc/scenes/indentation_scene.h>
 
 #include "tests.h"
 
@@ -33,14 +33,14 @@ main(int argc, char **argv)
       const auto         by_force = run({"Punch/Control=force",
                                          "Punch/Forces=0.02, 0.05",
                                          "Microstructure/Lobules=true",
-                                         "Microstructure/Ligaments=true",
+                                         "Microstructure/Ligaments/Enabled=true",
                                          "Run/Name=force_" + contact});
       std::ostringstream depth;
       depth << std::setprecision(17) << by_force.depths.back();
       const auto         by_depth = run({"Punch/Control=displacement",
                                          "Punch/Depth=" + depth.str(),
                                          "Microstructure/Lobules=true",
-                                         "Microstructure/Ligaments=true",
+                                         "Microstructure/Ligaments/Enabled=true",
                                          "Run/Name=depth_" + contact});
       std::ostringstream line;
       line << contact << ": 0.05 N gives " << std::setprecision(6)

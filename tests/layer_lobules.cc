@@ -6,11 +6,11 @@
 // gives the same model (bit for bit) and another seed another model, and a
 // cylindrical region keeps only lobules whose centroid lies inside it.
 
-#include <ssc/microstructure/lobules.h>
-
 #include <cmath>
 #include <iomanip>
 #include <set>
+
+#include <ssc/microstructure/lobules.h>
 
 #include "tests.h"
 

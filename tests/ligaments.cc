@@ -4,9 +4,9 @@
 // bottom of the skin to the top of the target layer (SM or deep, whose
 // depth varies here), and the same seed places them identically.
 
-#include <ssc/microstructure/ligaments.h>
-
 #include <cmath>
+
+#include <ssc/microstructure/ligaments.h>
 
 #include "tests.h"
 

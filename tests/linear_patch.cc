@@ -6,10 +6,10 @@
 
 #include <deal.II/base/function.h>
 
-#include <ssc/background_mesh.h>
-#include <ssc/mechanics/volume_elasticity.h>
-
 #include <iostream>
+
+#include <ssc/mechanics/elastic_system.h>
+#include <ssc/mesh/background_mesh.h>
 
 #include "quiet_elasticity.h"
 #include "tests.h"
@@ -56,18 +56,17 @@ main(int argc, char **argv)
                                  ssc::Formulation::enhanced})
     {
       ssc::ElasticityParameters parameters;
-      parameters.formulation = formulation;
-      parameters.tolerance   = 1e-14;
-      QuietElasticity        quiet(mesh, layers, parameters);
-      ssc::VolumeElasticity &elasticity = quiet.elasticity;
-      elasticity.setup_dofs();
+      parameters.formulation             = formulation;
+      parameters.linear_solver.tolerance = 1e-14;
+      QuietElasticity     quiet(mesh, layers, parameters);
+      ssc::ElasticSystem &elasticity = quiet.elasticity;
+      elasticity.field().distribute_dofs();
       std::vector<ssc::DirichletCondition> conditions;
       for (types::boundary_id id = 0; id < 6; ++id)
         conditions.push_back({id, ComponentMask(3, true), exact, {}});
-      elasticity.setup_system(conditions);
-      elasticity.assemble();
-      elasticity.solve();
-      const auto [l2, h1] = elasticity.compute_errors(*exact);
+      elasticity.setup(conditions);
+      elasticity.solve_linear();
+      const auto [l2, h1] = elasticity.field().errors(*exact);
       deallog << ssc::to_string(formulation)
               << ": L2 and H1 errors below 1e-10: "
               << (l2 < 1e-10 && h1 < 1e-10 ? "yes" : "no") << std::endl;

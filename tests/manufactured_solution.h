@@ -13,11 +13,11 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/tensor.h>
 
-#include <ssc/layer_stack.h>
-
 #include <cmath>
 #include <memory>
 #include <vector>
+
+#include <ssc/mesh/layer_stack.h>
 
 namespace ssc_test
 {

@@ -6,12 +6,12 @@
 // exact solution as Dirichlet data on all six sides, and logs the L2 and H1
 // errors with their observed rates.
 
-#include <ssc/background_mesh.h>
-#include <ssc/mechanics/volume_elasticity.h>
-
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+
+#include <ssc/mechanics/elastic_system.h>
+#include <ssc/mesh/background_mesh.h>
 
 #include "manufactured_solution.h"
 #include "quiet_elasticity.h"
@@ -44,26 +44,26 @@ namespace ssc_test
         mesh.build();
 
         ssc::ElasticityParameters parameters;
-        parameters.degree         = degree;
-        parameters.formulation    = formulation;
-        parameters.tolerance      = 1e-12;
-        parameters.max_iterations = 5000;
-        QuietElasticity        quiet(mesh, layers, parameters);
-        ssc::VolumeElasticity &elasticity = quiet.elasticity;
-        elasticity.setup_dofs();
+        parameters.degree                       = degree;
+        parameters.formulation                  = formulation;
+        parameters.linear_solver.tolerance      = 1e-12;
+        parameters.linear_solver.max_iterations = 5000;
+        QuietElasticity     quiet(mesh, layers, parameters);
+        ssc::ElasticSystem &elasticity = quiet.elasticity;
+        elasticity.field().distribute_dofs();
         std::vector<ssc::DirichletCondition> conditions;
         auto exact_ptr = std::make_shared<ExactDisplacement>(field, layers);
         for (types::boundary_id id = 0; id < 6; ++id)
           conditions.push_back({id, ComponentMask(3, true), exact_ptr, {}});
-        elasticity.setup_system(conditions);
-        elasticity.assemble(&force);
-        elasticity.solve();
-        const auto [l2, h1] = elasticity.compute_errors(exact);
+        elasticity.setup(conditions);
+        elasticity.loads().body_force = &force;
+        elasticity.solve_linear();
+        const auto [l2, h1] = elasticity.field().errors(exact);
 
         std::ostringstream line;
         line << "level " << level << " dofs " << std::setw(7)
-             << elasticity.n_dofs() << std::scientific << std::setprecision(3)
-             << "  L2 " << l2 << "  H1 " << h1;
+             << elasticity.field().dof_handler().n_dofs() << std::scientific
+             << std::setprecision(3) << "  L2 " << l2 << "  H1 " << h1;
         if (level > 0)
           line << std::fixed << std::setprecision(2) << "  rate L2 "
                << std::log2(last_l2 / l2) << "  rate H1 "

@@ -9,13 +9,13 @@
 //   including the columns of the punch-height dof that the contact couples
 //   to; with Q1 and with Q2 elements.
 
-#include <ssc/background_mesh.h>
-#include <ssc/mechanics/rigid_punch_contact.h>
-#include <ssc/mechanics/volume_elasticity.h>
-
 #include <cmath>
 #include <iostream>
 #include <random>
+
+#include <ssc/mechanics/elastic_system.h>
+#include <ssc/mechanics/rigid_punch_contact.h>
+#include <ssc/mesh/background_mesh.h>
 
 #include "quiet_elasticity.h"
 #include "tangent_check.h"
@@ -81,12 +81,12 @@ namespace
     ssc::ElasticityParameters parameters;
     parameters.formulation = ssc::Formulation::mixed;
     parameters.degree      = degree;
-    QuietElasticity        quiet(mesh, layers, parameters);
-    ssc::VolumeElasticity &elasticity = quiet.elasticity;
-    elasticity.setup_dofs();
+    QuietElasticity     quiet(mesh, layers, parameters);
+    ssc::ElasticSystem &elasticity = quiet.elasticity;
+    elasticity.field().distribute_dofs();
     types::global_dof_index centre_z = numbers::invalid_dof_index;
     for (const auto &cell :
-         elasticity.get_dof_handler().active_cell_iterators())
+         elasticity.field().dof_handler().active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         if (cell->vertex(v).norm() < 1e-12)
           centre_z = cell->vertex_dof_index(v, 2);
@@ -94,12 +94,12 @@ namespace
                                          100.,
                                          0.02,
                                          3.,
-                                         elasticity.get_dof_handler(),
-                                         elasticity.get_mapping(),
+                                         elasticity.field().dof_handler(),
+                                         elasticity.field().mapping(),
                                          ssc::BoundaryId::top,
                                          [centre_z]() { return centre_z; });
     elasticity.attach(contact);
-    elasticity.setup_system({});
+    elasticity.setup({});
     deallog << "Q" << degree
             << ": faces that can touch the punch: " << contact.n_faces()
             << std::endl;
@@ -109,11 +109,11 @@ namespace
     // displacements of up to 0.05 mm
     std::mt19937                           generator(3);
     std::uniform_real_distribution<double> uniform(-0.05, 0.05);
-    TrilinosWrappers::MPI::Vector          u = elasticity.get_solution();
+    TrilinosWrappers::MPI::Vector u = elasticity.field().owned_solution();
     for (unsigned int i = 0; i < u.size(); ++i)
       u[i] = uniform(generator);
     for (const auto &cell :
-         elasticity.get_dof_handler().active_cell_iterators())
+         elasticity.field().dof_handler().active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         {
           const Point<3> &X = cell->vertex(v);

@@ -5,11 +5,11 @@
 // the partition (the stiffness is printed to 6 digits, the solver tolerance
 // is 1e-12).
 
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
-
 #include <iomanip>
 #include <sstream>
+
+#include <ssc/parameters.h>
+#include <ssc/scenes/indentation_scene.h>
 
 #include "tests.h"
 
@@ -29,7 +29,7 @@ main(int argc, char **argv)
       parameters.read(SOURCE_DIR "/data/septa_block.prm",
                       {std::string("Microstructure/Lobules=") +
                          (k % 2 == 1 ? "true" : "false"),
-                       std::string("Microstructure/Ligaments=") +
+                       std::string("Microstructure/Ligaments/Enabled=") +
                          (k >= 2 ? "true" : "false"),
                        "Run/Name=septa_block_" + std::to_string(k)});
       const ssc::IndentationResult result =

@@ -7,10 +7,10 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <ssc/background_mesh.h>
-#include <ssc/mechanics/volume_elasticity.h>
-
 #include <iostream>
+
+#include <ssc/mechanics/elastic_system.h>
+#include <ssc/mesh/background_mesh.h>
 
 /// A square patch @p length mm wide with cells of @p cell_size mm, all of
 /// them in the ungraded core.
@@ -25,8 +25,9 @@ uniform_patch(const double length, const double cell_size)
   return parameters;
 }
 
-/// A VolumeElasticity with a timer that never reports and an output stream
-/// that is off; the solver keeps references to both, so they live beside it.
+/// An ElasticSystem with a timer that never reports and an output stream
+/// that is off; the system keeps a reference to the timer, so both live
+/// beside it.
 struct QuietElasticity
 {
   QuietElasticity(ssc::BackgroundMesh             &mesh,
@@ -37,12 +38,12 @@ struct QuietElasticity
             dealii::TimerOutput::never,
             dealii::TimerOutput::wall_times)
     , pcout(std::cout, false)
-    , elasticity(mesh, layers, parameters, timer, pcout)
+    , elasticity(mesh, layers, parameters, timer)
   {}
 
   dealii::TimerOutput        timer;
   dealii::ConditionalOStream pcout;
-  ssc::VolumeElasticity      elasticity;
+  ssc::ElasticSystem         elasticity;
 };
 
 #endif

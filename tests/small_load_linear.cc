@@ -5,12 +5,12 @@
 // formulation (whose small-strain limit, the mean dilatation, is the linear
 // B-bar).
 
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
-
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+
+#include <ssc/parameters.h>
+#include <ssc/scenes/indentation_scene.h>
 
 #include "tests.h"
 

@@ -9,12 +9,12 @@
 // (conforming displacement FE under displacement control), like the fixed
 // bottom of the finite block, which adds about +0.2 %.
 
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
-
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+
+#include <ssc/parameters.h>
+#include <ssc/scenes/indentation_scene.h>
 
 #include "tests.h"
 

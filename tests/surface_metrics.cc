@@ -16,9 +16,9 @@
 //   narrow as the filter leaves a ring below its trend: relief, by
 //   definition.)
 
-#include <ssc/scenes/surface_metrics.h>
-
 #include <cmath>
+
+#include <ssc/scenes/surface_metrics.h>
 
 #include "tests.h"
 

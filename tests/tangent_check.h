@@ -6,11 +6,11 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <ssc/mechanics/volume_elasticity.h>
-
 #include <algorithm>
 #include <cmath>
 #include <utility>
+
+#include <ssc/mechanics/elastic_system.h>
 
 /**
  * Largest |K_ij - dr_i/du_j| and largest |K_ij| over the columns j = 0,
@@ -19,15 +19,15 @@
  * u - h e_j of the last column.
  */
 inline std::pair<double, double>
-tangent_error(ssc::VolumeElasticity                       &elasticity,
+tangent_error(ssc::ElasticSystem                          &elasticity,
               const dealii::TrilinosWrappers::MPI::Vector &u,
               const double                                 h,
               const unsigned int                           stride)
 {
   using namespace dealii;
-  elasticity.set_solution(u);
-  elasticity.assemble_newton_system(true);
-  const auto &K             = elasticity.get_system_matrix();
+  elasticity.field().set_solution(u);
+  elasticity.assemble(true);
+  const auto &K             = elasticity.tangent();
   double      largest_error = 0, largest_entry = 0;
   for (unsigned int j = 0; j < u.size(); j += stride)
     {
@@ -36,12 +36,12 @@ tangent_error(ssc::VolumeElasticity                       &elasticity,
       minus[j] -= h;
       plus.compress(VectorOperation::insert);
       minus.compress(VectorOperation::insert);
-      elasticity.set_solution(plus);
-      elasticity.assemble_newton_system(false);
-      TrilinosWrappers::MPI::Vector r_plus(elasticity.get_system_rhs());
-      elasticity.set_solution(minus);
-      elasticity.assemble_newton_system(false);
-      TrilinosWrappers::MPI::Vector r_minus(elasticity.get_system_rhs());
+      elasticity.field().set_solution(plus);
+      elasticity.assemble(false);
+      TrilinosWrappers::MPI::Vector r_plus(elasticity.rhs());
+      elasticity.field().set_solution(minus);
+      elasticity.assemble(false);
+      TrilinosWrappers::MPI::Vector r_minus(elasticity.rhs());
       for (unsigned int i = 0; i < u.size(); ++i)
         {
           // system_rhs = -r, so dr/du_j = -(rhs+ - rhs-) / 2h

@@ -15,9 +15,9 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <ssc/mechanics/truncated_cg.h>
-
 #include <cmath>
+
+#include <ssc/mechanics/truncated_cg.h>
 
 #include "tests.h"
 

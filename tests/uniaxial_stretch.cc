@@ -17,14 +17,15 @@
 
 #include <deal.II/base/function.h>
 
-#include <ssc/background_mesh.h>
-#include <ssc/mechanics/newton_solver.h>
-#include <ssc/mechanics/volume_elasticity.h>
-
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <vector>
+
+#include <ssc/mechanics/elastic_system.h>
+#include <ssc/mesh/background_mesh.h>
+#include <ssc/nonlinear/elastic_problem.h>
+#include <ssc/nonlinear/load_stepping.h>
 
 #include "quiet_elasticity.h"
 #include "tests.h"
@@ -93,14 +94,14 @@ main(int argc, char **argv)
         {
           layers.set_model(0, model);
           ssc::ElasticityParameters parameters;
-          parameters.formulation = formulation;
-          parameters.tolerance   = 1e-12;
+          parameters.formulation             = formulation;
+          parameters.linear_solver.tolerance = 1e-12;
           ssc::NewtonParameters newton_parameters;
           newton_parameters.relative_tolerance = 1e-12;
           newton_parameters.absolute_tolerance = 1e-16;
-          QuietElasticity        quiet(mesh, layers, parameters);
-          ssc::VolumeElasticity &elasticity = quiet.elasticity;
-          elasticity.setup_dofs();
+          QuietElasticity     quiet(mesh, layers, parameters);
+          ssc::ElasticSystem &elasticity = quiet.elasticity;
+          elasticity.field().distribute_dofs();
           const auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
           // unit value: the face x = 1 moves by 1 mm (stretch 1.5 at 1)
           const auto move = std::make_shared<Functions::ConstantFunction<3>>(
@@ -109,23 +110,24 @@ main(int argc, char **argv)
           x.set(0, true);
           y.set(1, true);
           z.set(2, true);
-          elasticity.setup_system({{ssc::BoundaryId::x_min, x, zero, {}},
-                                   {ssc::BoundaryId::x_max, x, move, {}},
-                                   {ssc::BoundaryId::y_min, y, zero, {}},
-                                   {ssc::BoundaryId::bottom, z, zero, {}}});
-          ssc::NewtonSolver newton(elasticity,
+          elasticity.setup({{ssc::BoundaryId::x_min, x, zero, {}},
+                            {ssc::BoundaryId::x_max, x, move, {}},
+                            {ssc::BoundaryId::y_min, y, zero, {}},
+                            {ssc::BoundaryId::bottom, z, zero, {}}});
+          ssc::ElasticProblem problem(elasticity);
+          ssc::LoadStepper    stepper(problem,
                                    newton_parameters,
                                    quiet.pcout,
                                    false);
-          double            increment = 0.1;
-          const double      target    = 2. * (lambda - 1.); // length 2 mm
-          const auto        report    = newton.follow(
+          double              increment = 0.1;
+          const double        target    = 2. * (lambda - 1.); // length 2 mm
+          const auto          report    = stepper.follow(
             0.,
             std::abs(target),
             increment,
             [&](const double load) {
-              elasticity.set_dirichlet_scale(target > 0 ? load : -load);
-              return std::vector<std::pair<types::global_dof_index, double>>();
+              elasticity.constraints().set_dirichlet_scale(target > 0 ? load :
+                                                                        -load);
             },
             ssc::LoadDependence::right_hand_side);
           const double force    = elasticity.reaction(1)[0];

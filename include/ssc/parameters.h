@@ -3,17 +3,18 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <ssc/background_mesh.h>
-#include <ssc/layer_stack.h>
-#include <ssc/mechanics/elasticity_parameters.h>
-#include <ssc/mechanics/embedded_parameters.h>
-#include <ssc/mechanics/newton_parameters.h>
-#include <ssc/microstructure/microstructure_parameters.h>
-#include <ssc/scenes/growth_parameters.h>
-#include <ssc/scenes/punch_parameters.h>
-
 #include <string>
 #include <vector>
+
+#include <ssc/mechanics/elasticity_parameters.h>
+#include <ssc/mechanics/embedded_parameters.h>
+#include <ssc/mesh/layer_stack.h>
+#include <ssc/mesh/mesh_parameters.h>
+#include <ssc/microstructure/microstructure_parameters.h>
+#include <ssc/nonlinear/newton_parameters.h>
+#include <ssc/scenes/growth_parameters.h>
+#include <ssc/scenes/punch_parameters.h>
+#include <ssc/scenes/run_parameters.h>
 
 namespace ssc
 {
@@ -29,31 +30,24 @@ namespace ssc
                       const bool         skip_undefined,
                       const unsigned int depth = 0);
 
-  /// Section "Run": which scene, where its results go.
-  struct RunParameters
-  {
-    std::string scene            = "indentation";
-    std::string name             = "indentation";
-    std::string output_directory = "output";
-    bool        test_mode        = false;
-    bool        write_fields     = true;
-
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
-  };
-
   /**
    * All parameters of one run, read from a prm file plus command-line
-   * overrides "Section/Subsection/Name=value". Parsing takes two passes
-   * because the prm file decides which layer sections exist: the first
-   * pass reads only the layer list (tolerating everything else), the
-   * second declares one section per layer and parses strictly.
+   * overrides "Section/Subsection/Name=value". Every entry is declared
+   * once, bound to its member (ParameterHandler::add_parameter), whose
+   * initial value is the default. Parsing takes two passes because the prm
+   * file decides which layer sections exist: the first pass reads only the
+   * layer list (tolerating everything else), the second declares one
+   * section per layer and parses strictly. The handler keeps references to
+   * the members, so a Parameters object is neither copied nor moved.
    */
   class Parameters
   {
   public:
+    Parameters()                   = default;
+    Parameters(const Parameters &) = delete;
+    Parameters &
+    operator=(const Parameters &) = delete;
+
     /// Reads @p file (if not empty) and applies @p overrides; throws
     /// ExcMessage naming the parameter (and file and line) on bad input.
     void
@@ -63,7 +57,8 @@ namespace ssc
     static void
     print_defaults(std::ostream &out);
 
-    /// Writes the parameters actually used, in prm format.
+    /// Writes the parameters actually used, in prm format: running it
+    /// again reproduces the run.
     void
     print_used(std::ostream &out) const;
 
@@ -78,10 +73,18 @@ namespace ssc
     NewtonParameters         newton;
 
   private:
-    static void
-    declare(ParameterHandler &prm, const std::vector<std::string> &layers);
+    /// Declares every section, bound to the members, with one section per
+    /// layer in @p layers.
+    void
+    add_parameters(ParameterHandler               &handler,
+                   const std::vector<std::string> &layers);
 
-    /// Cross-checks between sections (geometry consistency).
+    /// Checks each section and derives what follows from the values.
+    void
+    finalise();
+
+    /// Cross-checks between sections: every inconsistent combination a run
+    /// would reject.
     void
     check_consistency() const;
 

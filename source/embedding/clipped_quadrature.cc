@@ -3,11 +3,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
-#include <ssc/embedding/clipped_quadrature.h>
-
 #include <array>
 #include <cmath>
 #include <map>
+
+#include <ssc/embedding/clipped_quadrature.h>
 
 namespace ssc
 {

@@ -6,10 +6,10 @@
 
 #include <boost/geometry/index/rtree.hpp>
 
-#include <ssc/embedding/point_locator.h>
-
 #include <limits>
 #include <sstream>
+
+#include <ssc/embedding/point_locator.h>
 
 namespace ssc
 {

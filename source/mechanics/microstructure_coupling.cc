@@ -2,20 +2,26 @@
 
 namespace ssc
 {
-  MicrostructureCoupling::MicrostructureCoupling(const Parameters   &parameters,
-                                                 BackgroundMesh     &mesh,
-                                                 VolumeElasticity   &elasticity,
-                                                 TimerOutput        &timer,
-                                                 ConditionalOStream &pcout)
-    : parameters(parameters)
-    , septum_material{parameters.embedded.septum_youngs_modulus,
-                      parameters.embedded.septum_poisson_ratio,
-                      parameters.embedded.septum_thickness}
-    , ligament_material{parameters.embedded.ligament_youngs_modulus,
-                        0.,
-                        parameters.embedded.ligament_area()}
-    , mesh(mesh)
-    , elasticity(elasticity)
+  MicrostructureCoupling::MicrostructureCoupling(
+    const LayerStack               &layers,
+    const MeshParameters           &mesh,
+    const MicrostructureParameters &microstructure,
+    const EmbeddedParameters       &embedded,
+    ElasticSystem                  &system,
+    TimerOutput                    &timer,
+    ConditionalOStream             &pcout)
+    : layers(layers)
+    , mesh_parameters(mesh)
+    , parameters(microstructure)
+    , embedded(embedded)
+    , septum(IsotropicModuli(embedded.septum_youngs_modulus,
+                             embedded.septum_poisson_ratio),
+             embedded.septum_thickness,
+             embedded.septum_tension_field)
+    , ligament(embedded.ligament_youngs_modulus,
+               embedded.ligament_area(),
+               embedded.ligament_tension_only)
+    , system(system)
     , timer(timer)
     , pcout(pcout)
   {}
@@ -37,10 +43,8 @@ namespace ssc
 
 
   template <int dim>
-  std::unique_ptr<EmbeddedElasticity>
-  MicrostructureCoupling::embed(const Triangulation<dim, 3> &mesh,
-                                const EmbeddedKind           kind,
-                                const EmbeddedMaterial      &material,
+  std::vector<CellQuadrature>
+  MicrostructureCoupling::split(const Triangulation<dim, 3> &mesh,
                                 const unsigned int           n_points,
                                 double                      &covered,
                                 double                      &total)
@@ -49,120 +53,65 @@ namespace ssc
     const auto quadrature =
       clipped_quadrature(mesh, *locator, n_points, covered);
     clip_seconds += clip_timer.wall_time();
-    total          = measure(mesh);
-    auto stiffness = std::make_unique<EmbeddedElasticity>(
-      kind,
-      quadrature,
-      [material](types::material_id) { return material; },
-      elasticity.get_fe(),
-      elasticity.get_mapping(),
-      locator->communicator(),
-      kind == EmbeddedKind::cable ? parameters.embedded.ligament_tension_only :
-                                    parameters.embedded.septum_tension_field);
-    elasticity.attach(*stiffness);
-    return stiffness;
+    total = measure(mesh);
+    return quadrature;
   }
 
 
   void
   MicrostructureCoupling::setup()
   {
-    const MicrostructureParameters &m = parameters.microstructure;
-    const EmbeddedParameters       &e = parameters.embedded;
-    if (!m.lobules && !m.ligaments)
+    if (!parameters.lobules && !parameters.ligaments)
       return;
     {
       TimerOutput::Scope t(timer, "microstructure");
       microstructure =
-        std::make_unique<Microstructure>(parameters.layers,
-                                         parameters.mesh.patch_length_x,
-                                         parameters.mesh.patch_length_y,
-                                         m);
+        std::make_unique<Microstructure>(layers,
+                                         mesh_parameters.patch_length_x,
+                                         mesh_parameters.patch_length_y,
+                                         parameters);
       microstructure->build(
         [this](const std::string &line) { pcout << line << std::endl; });
     }
 
-    TimerOutput::Scope t(timer, "embedding");
-    locator = std::make_unique<PointLocator>(mesh.triangulation(),
-                                             elasticity.get_mapping());
-    if (e.septa_stiffness && microstructure->septa_mesh().n_active_cells() > 0)
+    TimerOutput::Scope       t(timer, "embedding");
+    const DisplacementField &field = system.field();
+    locator =
+      std::make_unique<PointLocator>(field.triangulation(), field.mapping());
+    const MPI_Comm communicator = locator->communicator();
+    if (embedded.septa_stiffness &&
+        microstructure->septa_mesh().n_active_cells() > 0)
       {
-        septa = embed(microstructure->septa_mesh(),
-                      EmbeddedKind::membrane,
-                      septum_material,
-                      e.septum_quadrature,
-                      septa_area_covered,
-                      septa_area);
-        septa_writer =
-          std::make_unique<EmbeddedFieldWriter<2>>(microstructure->septa_mesh(),
-                                                   *locator);
+        septa = std::make_unique<EmbeddedStiffness>(
+          split(microstructure->septa_mesh(),
+                embedded.septum_quadrature,
+                septa_area_covered,
+                septa_area),
+          septum,
+          field.fe(),
+          field.mapping(),
+          communicator);
+        system.attach(*septa);
       }
-    if (e.ligament_stiffness &&
+    if (embedded.ligament_stiffness &&
         microstructure->ligament_mesh().n_active_cells() > 0)
       {
-        cables          = embed(microstructure->ligament_mesh(),
-                       EmbeddedKind::cable,
-                       ligament_material,
-                       e.ligament_quadrature,
-                       ligament_length_covered,
-                       ligament_length);
-        ligament_writer = std::make_unique<EmbeddedFieldWriter<1>>(
-          microstructure->ligament_mesh(), *locator);
+        cables = std::make_unique<EmbeddedStiffness>(
+          split(microstructure->ligament_mesh(),
+                embedded.ligament_quadrature,
+                ligament_length_covered,
+                ligament_length),
+          ligament,
+          field.fe(),
+          field.mapping(),
+          communicator);
+        system.attach(*cables);
       }
     pcout << "Embedded: " << (septa ? septa->n_points() : 0)
           << " septa quadrature points (" << septa_area_covered << " of "
           << septa_area << " mm^2), " << (cables ? cables->n_points() : 0)
           << " ligament quadrature points (" << ligament_length_covered
           << " of " << ligament_length << " mm)" << std::endl;
-  }
-
-
-  void
-  MicrostructureCoupling::write(RunOutput         &output,
-                                const unsigned int step,
-                                const double       time) const
-  {
-    if (septa)
-      {
-        const EmbeddedMaterial &material = septum_material;
-        const std::string       file =
-          "septa_" + Utilities::int_to_string(step, 4) + ".vtu";
-        septa_writer->write(
-          output.path(file),
-          elasticity,
-          {{"membrane_stress_von_mises",
-            [&](const SymmetricTensor<2, 3> &eps,
-                const Tensor<1, 3>          &normal,
-                types::material_id) {
-              return septa->axial_or_membrane_stress(eps, normal, material);
-            }},
-           {"septum",
-            [](const SymmetricTensor<2, 3> &,
-               const Tensor<1, 3> &,
-               const types::material_id id) { return double(id); }}});
-        output.add_pvd_record("septa", time, file);
-      }
-    if (cables)
-      {
-        const EmbeddedMaterial &material = ligament_material;
-        const std::string       file =
-          "ligaments_" + Utilities::int_to_string(step, 4) + ".vtu";
-        ligament_writer->write(
-          output.path(file),
-          elasticity,
-          {{"axial_force_N",
-            [&](const SymmetricTensor<2, 3> &eps,
-                const Tensor<1, 3>          &tangent,
-                types::material_id) {
-              return material.size *
-                     cables->axial_or_membrane_stress(eps, tangent, material);
-            }},
-           {"ligament",
-            [](const SymmetricTensor<2, 3> &,
-               const Tensor<1, 3> &,
-               const types::material_id id) { return double(id); }}});
-        output.add_pvd_record("ligaments", time, file);
-      }
   }
 
 

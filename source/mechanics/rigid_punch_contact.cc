@@ -4,9 +4,9 @@
 
 #include <deal.II/fe/fe_values.h>
 
-#include <ssc/mechanics/rigid_punch_contact.h>
-
 #include <cmath>
+
+#include <ssc/mechanics/rigid_punch_contact.h>
 
 namespace ssc
 {

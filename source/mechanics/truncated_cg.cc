@@ -1,6 +1,6 @@
-#include <ssc/mechanics/truncated_cg.h>
-
 #include <cmath>
+
+#include <ssc/mechanics/truncated_cg.h>
 
 namespace ssc
 {

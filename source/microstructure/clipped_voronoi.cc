@@ -8,12 +8,13 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
-#include <ssc/microstructure/clipped_voronoi.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <utility>
+
+#include <ssc/microstructure/clipped_voronoi.h>
 
 namespace ssc
 {

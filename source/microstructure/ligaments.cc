@@ -2,12 +2,12 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
 
-#include <ssc/microstructure/ligaments.h>
-
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
+
+#include <ssc/microstructure/ligaments.h>
 
 namespace ssc
 {
@@ -22,9 +22,10 @@ namespace ssc
              layers.layer(top).kind == LayerKind::skin)
         ++top;
       AssertThrow(top > 0 && top < layers.n_layers(),
-                  ExcMessage("Microstructure/Ligaments: skin ligaments need "
-                             "a layer of kind skin at the top of the stack "
-                             "and layers below it."));
+                  ExcMessage(
+                    "Microstructure/Ligaments/Enabled: skin ligaments need "
+                    "a layer of kind skin at the top of the stack "
+                    "and layers below it."));
       const LayerKind wanted =
         target == LigamentTarget::SM ? LayerKind::SM : LayerKind::deep;
       for (unsigned int l = top; l < layers.n_layers(); ++l)

@@ -2,10 +2,10 @@
 
 #include <deal.II/numerics/rtree.h>
 
-#include <ssc/microstructure/lobule_locator.h>
-
 #include <utility>
 #include <vector>
+
+#include <ssc/microstructure/lobule_locator.h>
 
 namespace ssc
 {

@@ -2,11 +2,11 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 
-#include <ssc/microstructure/lobules.h>
-
 #include <cmath>
 #include <random>
 #include <sstream>
+
+#include <ssc/microstructure/lobules.h>
 
 namespace ssc
 {

@@ -6,13 +6,13 @@
 
 #include <deal.II/numerics/data_out.h>
 
-#include <ssc/microstructure/microstructure.h>
-#include <ssc/output.h>
-
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+
+#include <ssc/base/empty_vtu.h>
+#include <ssc/microstructure/microstructure.h>
 
 namespace ssc
 {

@@ -2,14 +2,14 @@
 
 #include <deal.II/numerics/data_out.h>
 
-#include <ssc/background_mesh.h>
-#include <ssc/microstructure/microstructure.h>
-#include <ssc/scenes/geometry_scene.h>
-#include <ssc/scenes/scene_run.h>
-
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+
+#include <ssc/mesh/background_mesh.h>
+#include <ssc/microstructure/microstructure.h>
+#include <ssc/scenes/geometry_scene.h>
+#include <ssc/scenes/scene_run.h>
 
 namespace ssc
 {

@@ -1,8 +1,8 @@
 #include <deal.II/base/exceptions.h>
 
-#include <ssc/scenes/growth_region.h>
-
 #include <algorithm>
+
+#include <ssc/scenes/growth_region.h>
 
 namespace ssc
 {

@@ -1,19 +1,18 @@
 #include <deal.II/base/timer.h>
 
-#include <ssc/background_mesh.h>
+#include <iomanip>
+#include <sstream>
+
 #include <ssc/embedding/point_locator.h>
-#include <ssc/mechanics/microstructure_coupling.h>
-#include <ssc/mechanics/newton_solver.h>
-#include <ssc/mechanics/volume_elasticity.h>
-#include <ssc/output.h>
+#include <ssc/output/microstructure_output.h>
+#include <ssc/output/run_output.h>
+#include <ssc/output/volume_output.h>
 #include <ssc/scenes/growth_region.h>
 #include <ssc/scenes/growth_scene.h>
 #include <ssc/scenes/mechanics_model.h>
+#include <ssc/scenes/quasi_static_driver.h>
 #include <ssc/scenes/scene_run.h>
 #include <ssc/scenes/support_conditions.h>
-
-#include <iomanip>
-#include <sstream>
 
 namespace ssc
 {
@@ -75,23 +74,22 @@ namespace ssc
     TimerOutput            &timer  = scene.timer();
 
     MechanicsModel          model(parameters, mpi_communicator, timer, pcout);
-    BackgroundMesh         &mesh       = model.mesh();
-    VolumeElasticity       &elasticity = model.elasticity();
-    MicrostructureCoupling &coupling   = model.coupling();
+    ElasticSystem          &system   = model.system();
+    MicrostructureCoupling &coupling = model.coupling();
 
     GrowthResult result;
     {
       TimerOutput::Scope t(timer, "setup");
-      elasticity.setup_system(support_conditions(parameters.elasticity.sides),
-                              {});
+      system.setup(support_conditions(parameters.elasticity.sides));
       const GrowthRegion region(parameters.layers,
                                 growth,
                                 coupling.get_microstructure());
-      elasticity.set_growth(
-        [&region](const Point<3> &p, const unsigned int layer) {
-          return region(p, layer);
-        });
-      result.selected_volume = elasticity.growth_volume();
+      system.growth().sample(system.field(),
+                             [&region](const Point<3>    &p,
+                                       const unsigned int layer) {
+                               return region(p, layer);
+                             });
+      result.selected_volume = system.growth().volume(system.field());
       AssertThrow(result.selected_volume > 0,
                   ExcMessage("Growth: no material grows (no lobule of "
                              "Growth/Layers has its centroid in the region, "
@@ -104,110 +102,79 @@ namespace ssc
             << std::endl;
     }
 
-    const PointLocator locator(mesh.triangulation(), elasticity.get_mapping());
-    GridField          elevation = surface_grid(growth, parameters.mesh);
+    const PointLocator    locator(model.mesh().triangulation(),
+                               system.field().mapping());
+    GridField             elevation = surface_grid(growth, parameters.mesh);
     std::vector<Point<3>> surface_points;
     for (const double y : elevation.y)
       for (const double x : elevation.x)
         surface_points.emplace_back(x, y, 0.);
     const auto surface = locator.locate(surface_points);
 
-    std::vector<unsigned int>        linear_iterations, newton_iterations, cuts;
-    std::vector<double>              times;
-    std::vector<std::vector<double>> residual_histories;
-    const bool                       nonlinear = parameters.layers.nonlinear();
-    NewtonSolver newton(elasticity, parameters.newton, pcout, !run.test_mode);
-    const auto   apply_growth = [&](const double fraction)
-      -> std::vector<std::pair<types::global_dof_index, double>> {
-      elasticity.set_growth_scale(fraction * result.growth_ratio);
-      return {};
-    };
-    double position = 0, increment = 1. / parameters.newton.initial_steps;
-    double previous_fraction = 1;
-    // linear: one solve for the whole growth, the steps by scaling
-    LinearSolveReport linear_solve;
-    double            linear_solve_time = 0;
-    if (nonlinear)
-      {
-        apply_growth(0.);
-        elasticity.apply_constraints_to_solution();
-      }
-    else
-      {
-        Timer solve_timer(mpi_communicator, true);
-        apply_growth(1.);
-        elasticity.assemble();
-        linear_solve      = elasticity.solve();
-        linear_solve_time = solve_timer.wall_time();
-        pcout << "Linear elasticity: one solve for the whole growth";
-        if (!run.test_mode)
-          pcout << ", " << linear_solve.iterations << " CG iterations";
-        pcout << std::endl;
-      }
-
+    QuasiStaticDriver driver(system, parameters.newton, pcout, !run.test_mode);
+    const MicrostructureOutput microstructure_output(
+      coupling,
+      driver.linear() ? Kinematics::small_strain : Kinematics::finite_strain);
+    std::vector<double> fractions;
     for (unsigned int step = 1; step <= growth.load_steps; ++step)
-      {
-        const double fraction = double(step) / growth.load_steps;
-        if (nonlinear)
-          {
-            Timer                step_timer(mpi_communicator, true);
-            const LoadPathReport report =
-              newton.follow(position,
-                            fraction,
-                            increment,
-                            apply_growth,
-                            LoadDependence::tangent);
-            position = fraction;
-            linear_iterations.push_back(report.linear_iterations);
-            newton_iterations.push_back(report.newton_iterations);
-            cuts.push_back(report.cuts);
-            residual_histories.push_back(report.last_residuals);
-            times.push_back(step_timer.wall_time());
-          }
-        else
-          {
-            elasticity.scale_solution(fraction / previous_fraction);
-            previous_fraction = fraction;
-            linear_iterations.push_back(step == 1 ? linear_solve.iterations :
-                                                    0);
-            times.push_back(step == 1 ? linear_solve_time : 0.);
-            newton_iterations.push_back(0);
-            cuts.push_back(0);
-          }
-        std::vector<Tensor<1, 3>> u;
-        std::vector<Tensor<2, 3>> gradient;
-        elasticity.evaluate_at(surface, u, gradient);
-        for (unsigned int k = 0; k < u.size(); ++k)
-          elevation.values[k] = u[k][2];
-        result.metrics.push_back(
-          SurfaceMetrics::compute(elevation,
-                                  growth.trend_width,
-                                  growth.dimple_depth,
-                                  growth.metrics_half_width));
-        result.added_volumes.push_back(fraction * growth.added_volume);
-        result.volume_changes.push_back(elasticity.volume_change());
-        const SurfaceMetrics &m = result.metrics.back();
-        pcout << "Growth step " << step << " of " << growth.load_steps
-              << ": added " << std::setprecision(6)
-              << result.added_volumes.back() << " mm^3 (the body's volume "
-              << result.volume_changes.back() << " mm^3), elevation max "
-              << m.max_elevation << " mean " << m.mean_elevation
-              << " mm, roughness " << m.roughness << " mm, dimples "
-              << m.dimples.size();
-        if (nonlinear && !run.test_mode)
-          pcout << " (" << newton_iterations.back() << " Newton, "
-                << linear_iterations.back() << " CG iterations, " << cuts.back()
-                << " cuts)";
-        pcout << std::endl;
-        if (run.write_fields)
-          {
-            TimerOutput::Scope t(timer, "output");
-            const std::string  file =
-              elasticity.write_vtu(output.directory(), "volume", step);
-            output.add_pvd_record("volume", fraction, file);
-            coupling.write(output, step, fraction);
-          }
-      }
+      fractions.push_back(double(step) / growth.load_steps);
+    if (driver.linear())
+      pcout << "Linear elasticity: one solve for the whole growth";
+    const auto on_step = [&](const unsigned int k) {
+      const double fraction = fractions[k];
+      if (driver.linear() && k == 0)
+        {
+          if (!run.test_mode)
+            pcout << ", " << driver.statistics()[0].linear_iterations
+                  << " CG iterations";
+          pcout << std::endl;
+        }
+      std::vector<Tensor<1, 3>> u;
+      std::vector<Tensor<2, 3>> gradient;
+      system.field().evaluate_at(surface, u, gradient);
+      for (unsigned int i = 0; i < u.size(); ++i)
+        elevation.values[i] = u[i][2];
+      result.metrics.push_back(
+        SurfaceMetrics::compute(elevation,
+                                growth.trend_width,
+                                growth.dimple_depth,
+                                growth.metrics_half_width));
+      result.added_volumes.push_back(fraction * growth.added_volume);
+      result.volume_changes.push_back(system.volume_change());
+      const SurfaceMetrics &m          = result.metrics.back();
+      const StepStatistics &statistics = driver.statistics().back();
+      pcout << "Growth step " << k + 1 << " of " << growth.load_steps
+            << ": added " << std::setprecision(6) << result.added_volumes.back()
+            << " mm^3 (the body's volume " << result.volume_changes.back()
+            << " mm^3), elevation max " << m.max_elevation << " mean "
+            << m.mean_elevation << " mm, roughness " << m.roughness
+            << " mm, dimples " << m.dimples.size();
+      if (!driver.linear() && !run.test_mode)
+        pcout << " (" << statistics.newton_iterations << " Newton, "
+              << statistics.linear_iterations << " CG iterations, "
+              << statistics.cuts << " cuts)";
+      pcout << std::endl;
+      if (run.write_fields)
+        {
+          TimerOutput::Scope t(timer, "output");
+          const std::string  file = write_volume_vtu(system.field(),
+                                                    system.materials(),
+                                                    system.growth(),
+                                                    output.directory(),
+                                                    "volume",
+                                                    k + 1);
+          output.add_pvd_record("volume", fraction, file);
+          microstructure_output.write(system.field(), output, k + 1, fraction);
+        }
+    };
+    driver.run(
+      fractions,
+      [&](const double fraction) {
+        system.growth().set_scale(fraction * result.growth_ratio);
+      },
+      1. / parameters.newton.initial_steps,
+      LoadDependence::tangent,
+      on_step);
 
     {
       TimerOutput::Scope t(timer, "output");
@@ -229,19 +196,20 @@ namespace ssc
               << result.metrics[k].roughness << ','
               << result.metrics[k].dimples.size() << ','
               << json["dimples"]["max_depth_mm"].get<double>() << ','
-              << result.metrics[k].uplift_volume << ',' << newton_iterations[k]
-              << ',' << linear_iterations[k] << ',' << cuts[k] << ','
-              << times[k] << '\n';
+              << result.metrics[k].uplift_volume << ','
+              << driver.statistics()[k].newton_iterations << ','
+              << driver.statistics()[k].linear_iterations << ','
+              << driver.statistics()[k].cuts << ','
+              << driver.statistics()[k].wall_time << '\n';
         }
       output.write_text("growth.csv", csv.str());
     }
 
     nlohmann::ordered_json summary =
-      scene.summary(elasticity.n_dofs(),
-                    mesh.triangulation().n_global_active_cells());
-    summary["embedded"] = coupling.embedded_summary();
-    summary["solver"]   = solver_summary(
-      linear_iterations, newton_iterations, cuts, times, residual_histories);
+      scene.summary(system.field().dof_handler().n_dofs(),
+                    model.mesh().triangulation().n_global_active_cells());
+    summary["embedded"]          = coupling.embedded_summary();
+    summary["solver"]            = driver.summary();
     const SurfaceMetrics &last   = result.metrics.back();
     summary["added_volume_mm3"]  = growth.added_volume;
     summary["max_elevation_mm"]  = last.max_elevation;
@@ -250,21 +218,20 @@ namespace ssc
     summary["dimples"]           = last.to_json()["dimples"];
     summary["uplift_volume_mm3"] = last.uplift_volume;
     summary["volume_change_mm3"] = result.volume_changes.back();
-    summary["growth"]            = {
-                 {"layers", growth.layers},
-                 {"region",
-       growth.shape == GrowthRegionShape::patch ? "patch" : "ellipsoid"},
-                 {"grown_volume_mm3", result.selected_volume},
-                 {"growth_ratio", result.growth_ratio},
-                 {"stress_free_added_volume_mm3",
-                  result.growth_ratio * result.selected_volume},
-                 {"skin_modulus_factor", parameters.layers.get_skin_modulus_factor()},
-                 {"trend_filter_width_mm", growth.trend_width},
-                 {"metrics_grid",
-                  {{"nx", last.last_x - last.first_x + 1},
-                   {"ny", last.last_y - last.first_y + 1},
-                   {"spacing_mm", elevation.x[1] - elevation.x[0]},
-                   {"half_width_mm", growth.metrics_half_width}}}};
+    summary["growth"]            = {{"layers", growth.layers},
+                                    {"region", to_string(growth.shape)},
+                                    {"grown_volume_mm3", result.selected_volume},
+                                    {"growth_ratio", result.growth_ratio},
+                                    {"stress_free_added_volume_mm3",
+                                     result.growth_ratio * result.selected_volume},
+                                    {"skin_modulus_factor",
+                                     parameters.layers.get_skin_modulus_factor()},
+                                    {"trend_filter_width_mm", growth.trend_width},
+                                    {"metrics_grid",
+                                     {{"nx", last.last_x - last.first_x + 1},
+                                      {"ny", last.last_y - last.first_y + 1},
+                                      {"spacing_mm", elevation.x[1] - elevation.x[0]},
+                                      {"half_width_mm", growth.metrics_half_width}}}};
     nlohmann::ordered_json steps = nlohmann::ordered_json::array();
     for (unsigned int k = 0; k < result.metrics.size(); ++k)
       {

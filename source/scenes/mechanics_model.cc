@@ -19,19 +19,28 @@ namespace ssc
           << " hexahedra over " << parameters.layers.n_layers() << " layers"
           << std::endl;
 
-    volume_elasticity = std::make_unique<VolumeElasticity>(
-      *background_mesh, parameters.layers, parameters.elasticity, timer, pcout);
+    elastic_system = std::make_unique<ElasticSystem>(*background_mesh,
+                                                     parameters.layers,
+                                                     parameters.elasticity,
+                                                     timer);
     {
       TimerOutput::Scope t(timer, "setup");
-      volume_elasticity->setup_dofs();
+      elastic_system->field().distribute_dofs();
     }
-    pcout << "Degrees of freedom: " << volume_elasticity->n_dofs() << " (Q"
+    pcout << "Degrees of freedom: "
+          << elastic_system->field().dof_handler().n_dofs() << " (Q"
           << parameters.elasticity.degree << ", "
           << to_string(parameters.elasticity.formulation) << " formulation)"
           << std::endl;
 
-    microstructure_coupling = std::make_unique<MicrostructureCoupling>(
-      parameters, *background_mesh, *volume_elasticity, timer, pcout);
+    microstructure_coupling =
+      std::make_unique<MicrostructureCoupling>(parameters.layers,
+                                               parameters.mesh,
+                                               parameters.microstructure,
+                                               parameters.embedded,
+                                               *elastic_system,
+                                               timer,
+                                               pcout);
     microstructure_coupling->setup();
   }
 } // namespace ssc

@@ -18,106 +18,84 @@ namespace ssc
 
 
   void
-  PunchParameters::declare_parameters(ParameterHandler &prm)
+  PunchParameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Punch");
-    prm.declare_entry("Radius",
-                      "2.5",
-                      Patterns::Double(0),
+    prm.add_parameter("Radius",
+                      radius,
                       "Radius a of the rigid flat cylindrical punch, mm "
-                      "(the forearm studies use a 5 mm diameter).");
-    prm.declare_entry("Contact",
-                      "bonded",
-                      Patterns::Selection("bonded|frictionless"),
+                      "(the forearm studies use a 5 mm diameter).",
+                      Patterns::Double(0));
+    prm.add_parameter("Contact",
+                      contact,
                       "bonded: the skin under the punch moves with it (no "
                       "slip); frictionless: only the vertical displacement "
                       "is the punch's, the skin slides freely under it "
                       "(Sneddon 1965).");
-    prm.declare_entry("Control",
-                      "displacement",
-                      Patterns::Selection("displacement|force"),
+    prm.add_parameter("Control",
+                      control,
                       "displacement: the depth is prescribed (Depth, Load "
                       "steps) and the force is the reaction; force: the "
                       "forces are prescribed (Forces) and the depth is "
                       "computed, the vertical displacements under the punch "
                       "being tied to one master unknown.");
-    prm.declare_entry("Depth",
-                      "0.5",
-                      Patterns::Double(0),
+    prm.add_parameter("Depth",
+                      depth,
                       "Indentation depth at the last load step, mm "
-                      "(displacement control).");
-    prm.declare_entry("Load steps",
-                      "1",
-                      Patterns::Integer(1, 1000),
+                      "(displacement control).",
+                      Patterns::Double(0));
+    prm.add_parameter("Load steps",
+                      load_steps,
                       "Number of equal depth increments (displacement "
-                      "control).");
-    prm.declare_entry("Forces",
-                      "0.35, 0.5, 0.75, 1.0, 1.25, 1.5, 1.8",
-                      Patterns::List(Patterns::Double(0)),
+                      "control).",
+                      Patterns::Integer(1, 1000));
+    prm.add_parameter("Forces",
+                      forces,
                       "Punch forces of the load steps, N, increasing (force "
-                      "control); the forearm measurements span 0.35-1.8 N.");
-    prm.declare_entry("Profile length",
-                      "30",
-                      Patterns::Double(0),
+                      "control); the forearm measurements span 0.35-1.8 N.",
+                      Patterns::List(Patterns::Double(0)));
+    prm.add_parameter("Profile length",
+                      profile_length,
                       "Length (mm) of the line y = 0 through the punch "
                       "centre along which the surface displacement u_z is "
-                      "written (surface_profile.csv); 0: none.");
-    prm.declare_entry("Profile points",
-                      "301",
-                      Patterns::Integer(2, 100000),
-                      "Points on that line.");
-    prm.declare_entry("Section",
-                      "true",
-                      Patterns::Bool(),
+                      "written (surface_profile.csv); 0: none.",
+                      Patterns::Double(0));
+    prm.add_parameter("Profile points",
+                      profile_points,
+                      "Points on that line.",
+                      Patterns::Integer(2, 100000));
+    prm.add_parameter("Section",
+                      section,
                       "Write the displacement and von Mises stress on the "
                       "vertical plane y = 0 (section.csv, last step).");
-    prm.declare_entry(
+    prm.add_parameter(
       "Edge contact",
-      "false",
-      Patterns::Bool(),
+      edge_contact,
       "Finite strain: frictionless penalty contact of the skin beside the "
       "punch with the punch's rounded edge and face, so that the skin pulled "
       "down around the punch wraps its edge instead of passing through it. "
       "Without it a frictionless punch loses the support of its rim at a "
       "few mm depth and Newton stalls (benchmarks/README.md).");
-    prm.declare_entry("Edge radius",
-                      "0.5",
-                      Patterns::Double(0),
+    prm.add_parameter("Edge radius",
+                      edge_radius,
                       "Radius (mm) of the rounding of the punch's bottom "
-                      "edge (Edge contact); at most the punch radius.");
-    prm.declare_entry("Contact penalty",
-                      "100",
-                      Patterns::Double(0),
+                      "edge (Edge contact); at most the punch radius.",
+                      Patterns::Double(0));
+    prm.add_parameter("Contact penalty",
+                      contact_penalty,
                       "Penalty factor of the edge contact: the contact "
                       "pressure is (factor) E / h times the penetration, E "
                       "the top layer's Young's modulus and h the size of "
                       "the surface face, so the skin penetrates about "
-                      "h/(factor) at the contact pressure E.");
+                      "h/(factor) at the contact pressure E.",
+                      Patterns::Double(0));
     prm.leave_subsection();
   }
 
 
   void
-  PunchParameters::parse_parameters(ParameterHandler &prm)
+  PunchParameters::check() const
   {
-    prm.enter_subsection("Punch");
-    radius     = prm.get_double("Radius");
-    contact    = prm.get("Contact") == "frictionless" ?
-                   PunchContact::frictionless :
-                   PunchContact::bonded;
-    control    = prm.get("Control") == "force" ? PunchControl::force :
-                                                 PunchControl::displacement;
-    depth      = prm.get_double("Depth");
-    load_steps = prm.get_integer("Load steps");
-    forces     = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Forces")));
-    profile_length  = prm.get_double("Profile length");
-    profile_points  = prm.get_integer("Profile points");
-    section         = prm.get_bool("Section");
-    edge_contact    = prm.get_bool("Edge contact");
-    edge_radius     = prm.get_double("Edge radius");
-    contact_penalty = prm.get_double("Contact penalty");
-    prm.leave_subsection();
     AssertThrow(!edge_contact || (edge_radius > 0 && edge_radius <= radius),
                 ExcMessage("Punch/Edge radius must be positive and at most "
                            "Punch/Radius."));

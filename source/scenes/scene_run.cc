@@ -2,38 +2,15 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <ssc/scenes/scene_run.h>
-
 #include <algorithm>
 #include <numeric>
 #include <sstream>
 #include <utility>
 
+#include <ssc/scenes/scene_run.h>
+
 namespace ssc
 {
-  nlohmann::ordered_json
-  solver_summary(const std::vector<unsigned int>        &linear_iterations,
-                 const std::vector<unsigned int>        &newton_iterations,
-                 const std::vector<unsigned int>        &cuts,
-                 const std::vector<double>              &wall_times,
-                 const std::vector<std::vector<double>> &final_residuals)
-  {
-    const auto total = [](const std::vector<unsigned int> &counts) {
-      return std::accumulate(counts.begin(), counts.end(), 0u);
-    };
-    nlohmann::ordered_json solver = {
-      {"linear_iterations", total(linear_iterations)},
-      {"linear_iterations_per_step", linear_iterations},
-      {"newton_iterations", total(newton_iterations)},
-      {"newton_iterations_per_step", newton_iterations},
-      {"load_cuts_per_step", cuts},
-      {"wall_time_per_step", wall_times}};
-    if (!final_residuals.empty())
-      solver["final_residuals_per_step"] = final_residuals;
-    return solver;
-  }
-
-
   namespace
   {
     double

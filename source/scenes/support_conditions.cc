@@ -1,9 +1,9 @@
 #include <deal.II/base/function.h>
 
-#include <ssc/background_mesh.h>
-#include <ssc/scenes/support_conditions.h>
-
 #include <memory>
+
+#include <ssc/mesh/background_mesh.h>
+#include <ssc/scenes/support_conditions.h>
 
 namespace ssc
 {

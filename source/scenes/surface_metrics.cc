@@ -3,13 +3,13 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ssc/scenes/surface_metrics.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <tuple>
 #include <utility>
+
+#include <ssc/scenes/surface_metrics.h>
 
 namespace ssc
 {

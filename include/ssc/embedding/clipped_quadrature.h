@@ -6,9 +6,9 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <ssc/embedding/point_locator.h>
-
 #include <vector>
+
+#include <ssc/embedding/point_locator.h>
 
 namespace ssc
 {

@@ -3,29 +3,41 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
+
+#include <ssc/base/enum_table.h>
+#include <ssc/mechanics/linear_solver_parameters.h>
+
 namespace ssc
 {
   using namespace dealii;
 
-  /// Volume discretisation: pure displacement; displacement with the
-  /// volumetric strain projected onto discontinuous P_{p-1} per cell
-  /// (B-bar; the statically condensed Q_p-P_{p-1}^disc mixed method); or
-  /// (Q1 only) that plus Wilson-Taylor incompatible modes, which remove the
-  /// shear locking of thin layers in bending.
+  /**
+   * Volume discretisation. displacement: standard Galerkin. mixed: the
+   * displacement with the dilatation (tr eps at small strain, J at finite
+   * strain) L2-projected onto discontinuous P_{p-1} on each cell, i.e. the
+   * Q_p-P_{p-1}^disc displacement-pressure method with the pressure
+   * condensed out (B-bar; three-field Hu-Washizu at finite strain). mean
+   * dilatation: the same with the projection onto constants (Q_p-P0; for
+   * Q1 the same as mixed). enhanced (Q1, small strain): mixed plus the
+   * Wilson-Taylor incompatible modes, against the shear locking of thin
+   * layers in bending.
+   */
   enum class Formulation
   {
     displacement,
     mixed,
+    mean_dilatation,
     enhanced
   };
 
-  /// The prm spelling of @p formulation.
-  inline const char *
-  to_string(const Formulation formulation)
+  constexpr std::array<std::pair<Formulation, const char *>, 4>
+  enum_table(Formulation)
   {
-    return formulation == Formulation::mixed    ? "mixed" :
-           formulation == Formulation::enhanced ? "enhanced" :
-                                                  "displacement";
+    return {{{Formulation::displacement, "displacement"},
+             {Formulation::mixed, "mixed"},
+             {Formulation::mean_dilatation, "mean dilatation"},
+             {Formulation::enhanced, "enhanced"}}};
   }
 
   /// How the lateral sides of the patch are held.
@@ -36,29 +48,41 @@ namespace ssc
     fixed
   };
 
+  constexpr std::array<std::pair<SideCondition, const char *>, 3>
+  enum_table(SideCondition)
+  {
+    return {{{SideCondition::free, "free"},
+             {SideCondition::roller, "roller"},
+             {SideCondition::fixed, "fixed"}}};
+  }
+
   /**
    * Discretisation, boundary conditions and linear solver of the volume
-   * elasticity problem.
+   * elasticity problem (section "Elasticity").
    */
   struct ElasticityParameters
   {
     unsigned int  degree      = 1;
     Formulation   formulation = Formulation::displacement;
     SideCondition sides       = SideCondition::roller;
-    /// Finite strain, mixed: fraction of the volumetric energy taken at the
-    /// quadrature points instead of from the cell's mean dilatation.
-    double       volumetric_stabilisation = 0.;
-    double       tolerance                = 1e-8;
-    unsigned int max_iterations           = 1000;
-    bool         rigid_body_modes         = true;
-    bool         smoothed_aggregation     = true;
-    double       aggregation_threshold    = 1e-4;
-    unsigned int smoother_sweeps          = 2;
+    /// Finite strain, mixed formulations: fraction of the volumetric
+    /// energy taken at the quadrature points instead of from the projected
+    /// dilatation.
+    double                 volumetric_stabilisation = 0.;
+    LinearSolverParameters linear_solver;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Dimension of the cell's pressure (dilatation) space: 0 for the
+    /// displacement formulation, 1 for P0, 4 for P1 (Q2 mixed).
+    unsigned int
+    n_pressure_modes() const;
+
+    /// Declares section "Elasticity", bound to the members.
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
+
+    /// Checks the values (after parsing); throws naming the parameter.
+    void
+    check() const;
   };
 } // namespace ssc
 

@@ -27,10 +27,13 @@ namespace ssc
     double
     ligament_area() const;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declares section "Embedded", bound to the members.
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
+
+    /// Checks the values (after parsing); throws naming the parameter.
+    void
+    check() const;
   };
 } // namespace ssc
 

@@ -5,15 +5,17 @@
 #include <deal.II/base/timer.h>
 
 #include <nlohmann/json.hpp>
-#include <ssc/embedding/embedded_output.h>
-#include <ssc/embedding/point_locator.h>
-#include <ssc/mechanics/embedded_elasticity.h>
-#include <ssc/mechanics/volume_elasticity.h>
-#include <ssc/microstructure/microstructure.h>
-#include <ssc/output.h>
-#include <ssc/parameters.h>
 
 #include <memory>
+
+#include <ssc/embedding/point_locator.h>
+#include <ssc/materials/cable_law.h>
+#include <ssc/materials/membrane_law.h>
+#include <ssc/mechanics/elastic_system.h>
+#include <ssc/mechanics/embedded_parameters.h>
+#include <ssc/mechanics/embedded_stiffness.h>
+#include <ssc/microstructure/microstructure.h>
+#include <ssc/microstructure/microstructure_parameters.h>
 
 namespace ssc
 {
@@ -21,26 +23,24 @@ namespace ssc
    * The hybrid model's microstructure in a mechanics scene: builds the
    * lobules, septa and ligaments the parameters ask for, embeds the septa as
    * membranes and the ligaments as cables in the background mesh (each can
-   * be switched off in the section "Embedded"), attaches their stiffness to
-   * the volume elasticity, and writes septa and ligaments with the
-   * interpolated displacement, membrane stress and cable force.
+   * be switched off in the section "Embedded") and attaches their
+   * stiffness to the elastic system. output/microstructure_output.h writes
+   * them.
    */
   class MicrostructureCoupling
   {
   public:
-    MicrostructureCoupling(const Parameters   &parameters,
-                           BackgroundMesh     &mesh,
-                           VolumeElasticity   &elasticity,
-                           TimerOutput        &timer,
-                           ConditionalOStream &pcout);
+    MicrostructureCoupling(const LayerStack               &layers,
+                           const MeshParameters           &mesh,
+                           const MicrostructureParameters &microstructure,
+                           const EmbeddedParameters       &embedded,
+                           ElasticSystem                  &system,
+                           TimerOutput                    &timer,
+                           ConditionalOStream             &pcout);
 
     /// Builds and embeds (timed as "microstructure" and "embedding").
     void
     setup();
-
-    /// Writes septa_<step>.vtu and ligaments_<step>.vtu with PVD records.
-    void
-    write(RunOutput &output, const unsigned int step, const double time) const;
 
     /// The summary's "embedded" entry (counts of triangles, segments,
     /// lobules and quadrature points, and what a fasciotomy cut).
@@ -55,38 +55,61 @@ namespace ssc
       return microstructure.get();
     }
 
-    /// Whether anything is embedded.
-    bool
-    active() const
+    /// The locator of the background mesh (null while nothing is built).
+    const PointLocator *
+    get_locator() const
     {
-      return septa != nullptr || cables != nullptr;
+      return locator.get();
+    }
+
+    /// Whether the septa and the ligaments are coupled.
+    bool
+    septa_coupled() const
+    {
+      return septa != nullptr;
+    }
+
+    bool
+    ligaments_coupled() const
+    {
+      return cables != nullptr;
+    }
+
+    const MembraneLaw &
+    septum_law() const
+    {
+      return septum;
+    }
+
+    const CableLaw &
+    ligament_law() const
+    {
+      return ligament;
     }
 
   private:
-    /// Splits @p mesh along the background cells, attaches its stiffness to
-    /// the volume elasticity, and returns it; @p covered and @p total are
-    /// the measure in the quadrature and of the mesh.
+    /// Splits @p mesh along the background cells into the quadrature of
+    /// @p n_points per direction; @p covered and @p total are the measure
+    /// in the quadrature and of the mesh.
     template <int dim>
-    std::unique_ptr<EmbeddedElasticity>
-    embed(const Triangulation<dim, 3> &mesh,
-          const EmbeddedKind           kind,
-          const EmbeddedMaterial      &material,
+    std::vector<CellQuadrature>
+    split(const Triangulation<dim, 3> &mesh,
           const unsigned int           n_points,
           double                      &covered,
           double                      &total);
 
-    const Parameters      &parameters;
-    const EmbeddedMaterial septum_material, ligament_material;
-    BackgroundMesh        &mesh;
-    VolumeElasticity      &elasticity;
-    TimerOutput           &timer;
-    ConditionalOStream    &pcout;
-
-    std::unique_ptr<Microstructure>         microstructure;
-    std::unique_ptr<PointLocator>           locator;
-    std::unique_ptr<EmbeddedElasticity>     septa, cables;
-    std::unique_ptr<EmbeddedFieldWriter<2>> septa_writer;
-    std::unique_ptr<EmbeddedFieldWriter<1>> ligament_writer;
+    const LayerStack                  &layers;
+    const MeshParameters              &mesh_parameters;
+    const MicrostructureParameters    &parameters;
+    const EmbeddedParameters          &embedded;
+    const MembraneLaw                  septum;
+    const CableLaw                     ligament;
+    ElasticSystem                     &system;
+    TimerOutput                       &timer;
+    ConditionalOStream                &pcout;
+    std::unique_ptr<Microstructure>    microstructure;
+    std::unique_ptr<PointLocator>      locator;
+    std::unique_ptr<EmbeddedStiffness> septa, cables;
     /// Wall time to split septa and ligaments along the background cells.
     double clip_seconds = 0;
     /// Area of septa and length of ligaments in the quadrature, and their

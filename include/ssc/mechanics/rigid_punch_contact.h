@@ -8,10 +8,10 @@
 
 #include <deal.II/fe/mapping.h>
 
-#include <ssc/mechanics/dof_contribution.h>
-
 #include <functional>
 #include <vector>
+
+#include <ssc/mechanics/dof_contribution.h>
 
 namespace ssc
 {

@@ -4,10 +4,10 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 
-#include <ssc/layer_stack.h>
-#include <ssc/microstructure/microstructure_parameters.h>
-
 #include <vector>
+
+#include <ssc/mesh/layer_stack.h>
+#include <ssc/microstructure/microstructure_parameters.h>
 
 namespace ssc
 {

@@ -3,10 +3,10 @@
 
 #include <deal.II/base/point.h>
 
-#include <ssc/layer_stack.h>
-#include <ssc/microstructure/lobules.h>
-
 #include <memory>
+
+#include <ssc/mesh/layer_stack.h>
+#include <ssc/microstructure/lobules.h>
 
 namespace ssc
 {

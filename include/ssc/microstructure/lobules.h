@@ -4,14 +4,14 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 
-#include <ssc/layer_stack.h>
-#include <ssc/microstructure/clipped_voronoi.h>
-#include <ssc/microstructure/microstructure_parameters.h>
-
 #include <array>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include <ssc/mesh/layer_stack.h>
+#include <ssc/microstructure/clipped_voronoi.h>
+#include <ssc/microstructure/microstructure_parameters.h>
 
 namespace ssc
 {

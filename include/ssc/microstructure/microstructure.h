@@ -4,15 +4,16 @@
 #include <deal.II/grid/tria.h>
 
 #include <nlohmann/json.hpp>
-#include <ssc/layer_stack.h>
-#include <ssc/microstructure/ligaments.h>
-#include <ssc/microstructure/lobules.h>
-#include <ssc/microstructure/microstructure_parameters.h>
 
 #include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include <ssc/mesh/layer_stack.h>
+#include <ssc/microstructure/ligaments.h>
+#include <ssc/microstructure/lobules.h>
+#include <ssc/microstructure/microstructure_parameters.h>
 
 namespace ssc
 {

@@ -5,8 +5,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <array>
 #include <cmath>
 #include <string>
+
+#include <ssc/base/enum_table.h>
 
 namespace ssc
 {
@@ -20,6 +23,14 @@ namespace ssc
     box,
     cylinder
   };
+
+  constexpr std::array<std::pair<RegionShape, const char *>, 3>
+  enum_table(RegionShape)
+  {
+    return {{{RegionShape::everywhere, "everywhere"},
+             {RegionShape::box, "box"},
+             {RegionShape::cylinder, "cylinder"}}};
+  }
 
   /**
    * The lateral region of interest of the microstructure: the whole patch,
@@ -51,11 +62,12 @@ namespace ssc
     deep
   };
 
-  /**
-   * Parameters of the procedural microstructure (section "Microstructure"):
-   * lobule tessellation of the SAT and DAT layers (their lobule diameters
-   * are layer parameters), septa, skin ligaments and the region of interest.
-   */
+  constexpr std::array<std::pair<LigamentTarget, const char *>, 2>
+  enum_table(LigamentTarget)
+  {
+    return {{{LigamentTarget::SM, "SM"}, {LigamentTarget::deep, "deep"}}};
+  }
+
   /**
    * A fasciotomy (surgical release, subcision): every septum whose
    * area-weighted centroid and every ligament whose axis lies within
@@ -76,6 +88,11 @@ namespace ssc
     }
   };
 
+  /**
+   * Parameters of the procedural microstructure (section "Microstructure"):
+   * lobule tessellation of the SAT and DAT layers (their lobule diameters
+   * are layer parameters), septa, skin ligaments and the region of interest.
+   */
   struct MicrostructureParameters
   {
     bool                 lobules                 = false;
@@ -83,17 +100,20 @@ namespace ssc
     unsigned int         seed                    = 1;
     unsigned int         lloyd_iterations        = 30;
     double               minimum_septum_area     = 1e-3;
-    double               septum_triangle_size    = 1;
+    double               septum_triangle_size    = 2;
     std::string          ligament_density        = "1";
     LigamentTarget       ligament_target         = LigamentTarget::SM;
     double               ligament_segment_length = 0.5;
     MicrostructureRegion region;
     Fasciotomy           fasciotomy;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declares section "Microstructure", bound to the members.
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
+
+    /// Checks the values (after parsing); throws naming the parameter.
+    void
+    check() const;
   };
 } // namespace ssc
 

@@ -4,8 +4,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <array>
 #include <string>
 #include <vector>
+
+#include <ssc/base/enum_table.h>
 
 namespace ssc
 {
@@ -17,6 +20,13 @@ namespace ssc
     patch,
     ellipsoid
   };
+
+  constexpr std::array<std::pair<GrowthRegionShape, const char *>, 2>
+  enum_table(GrowthRegionShape)
+  {
+    return {{{GrowthRegionShape::patch, "patch"},
+             {GrowthRegionShape::ellipsoid, "ellipsoid"}}};
+  }
 
   /**
    * The growth scene (section "Growth"): fat lobules of the named layers in
@@ -41,10 +51,13 @@ namespace ssc
     bool
     contains(const Point<3> &p) const;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declares section "Growth", bound to the members.
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
+
+    /// Checks the values (after parsing); throws naming the parameter.
+    void
+    check() const;
   };
 } // namespace ssc
 

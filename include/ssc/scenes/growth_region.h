@@ -3,13 +3,13 @@
 
 #include <deal.II/base/point.h>
 
-#include <ssc/layer_stack.h>
+#include <memory>
+#include <vector>
+
+#include <ssc/mesh/layer_stack.h>
 #include <ssc/microstructure/lobule_locator.h>
 #include <ssc/microstructure/microstructure.h>
 #include <ssc/scenes/growth_parameters.h>
-
-#include <memory>
-#include <vector>
 
 namespace ssc
 {

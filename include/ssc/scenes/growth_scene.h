@@ -3,10 +3,10 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <vector>
+
 #include <ssc/parameters.h>
 #include <ssc/scenes/surface_metrics.h>
-
-#include <vector>
 
 namespace ssc
 {

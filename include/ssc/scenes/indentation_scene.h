@@ -3,9 +3,9 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <ssc/parameters.h>
-
 #include <vector>
+
+#include <ssc/parameters.h>
 
 namespace ssc
 {

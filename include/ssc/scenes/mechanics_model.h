@@ -5,18 +5,18 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <ssc/background_mesh.h>
-#include <ssc/mechanics/microstructure_coupling.h>
-#include <ssc/mechanics/volume_elasticity.h>
-#include <ssc/parameters.h>
-
 #include <memory>
+
+#include <ssc/mechanics/elastic_system.h>
+#include <ssc/mechanics/microstructure_coupling.h>
+#include <ssc/mesh/background_mesh.h>
+#include <ssc/parameters.h>
 
 namespace ssc
 {
   /**
    * What every mechanics scene builds before it loads the patch: the
-   * background mesh, the volume elasticity on it (dofs distributed, no
+   * background mesh, the elastic system on it (dofs distributed, no
    * boundary conditions yet) and the microstructure embedded in it, each
    * timed as its phase of DESIGN.md §3 and reported in one progress line.
    */
@@ -34,10 +34,10 @@ namespace ssc
       return *background_mesh;
     }
 
-    VolumeElasticity &
-    elasticity()
+    ElasticSystem &
+    system()
     {
-      return *volume_elasticity;
+      return *elastic_system;
     }
 
     MicrostructureCoupling &
@@ -49,7 +49,7 @@ namespace ssc
   private:
     // built in this order, each on the one before
     std::unique_ptr<BackgroundMesh>         background_mesh;
-    std::unique_ptr<VolumeElasticity>       volume_elasticity;
+    std::unique_ptr<ElasticSystem>          elastic_system;
     std::unique_ptr<MicrostructureCoupling> microstructure_coupling;
   };
 } // namespace ssc

@@ -3,7 +3,10 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
 #include <vector>
+
+#include <ssc/base/enum_table.h>
 
 namespace ssc
 {
@@ -17,12 +20,26 @@ namespace ssc
     frictionless
   };
 
+  constexpr std::array<std::pair<PunchContact, const char *>, 2>
+  enum_table(PunchContact)
+  {
+    return {{{PunchContact::bonded, "bonded"},
+             {PunchContact::frictionless, "frictionless"}}};
+  }
+
   /// Whether the punch's depth or its force is prescribed.
   enum class PunchControl
   {
     displacement,
     force
   };
+
+  constexpr std::array<std::pair<PunchControl, const char *>, 2>
+  enum_table(PunchControl)
+  {
+    return {{{PunchControl::displacement, "displacement"},
+             {PunchControl::force, "force"}}};
+  }
 
   /// A rigid flat cylindrical punch at the patch centre (section "Punch").
   struct PunchParameters
@@ -44,10 +61,13 @@ namespace ssc
     std::vector<double>
     loads() const;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /// Declares section "Punch", bound to the members.
     void
-    parse_parameters(ParameterHandler &prm);
+    add_parameters(ParameterHandler &prm);
+
+    /// Checks the values (after parsing); throws naming the parameter.
+    void
+    check() const;
   };
 } // namespace ssc
 

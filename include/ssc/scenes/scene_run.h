@@ -6,28 +6,15 @@
 #include <deal.II/base/timer.h>
 
 #include <nlohmann/json.hpp>
-#include <ssc/output.h>
-#include <ssc/parameters.h>
 
 #include <string>
 #include <vector>
 
+#include <ssc/output/run_output.h>
+#include <ssc/parameters.h>
+
 namespace ssc
 {
-  /**
-   * summary.json's "solver" entry from the per-step counts: totals and
-   * per-step lists of linear and Newton iterations, load cuts, wall times
-   * and, when @p final_residuals is not empty, the residual history of the
-   * last increment of every step.
-   */
-  nlohmann::ordered_json
-  solver_summary(const std::vector<unsigned int>        &linear_iterations,
-                 const std::vector<unsigned int>        &newton_iterations,
-                 const std::vector<unsigned int>        &cuts,
-                 const std::vector<double>              &wall_times,
-                 const std::vector<std::vector<double>> &final_residuals);
-
-
   /**
    * What every scene does around its physics: opens output/<run name>/
    * (log, used parameters), times the phases of DESIGN.md §3 (mesh,

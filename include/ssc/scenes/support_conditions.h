@@ -1,10 +1,10 @@
 #ifndef ssc_scenes_support_conditions_h
 #define ssc_scenes_support_conditions_h
 
-#include <ssc/mechanics/elasticity_parameters.h>
-#include <ssc/mechanics/volume_elasticity.h>
-
 #include <vector>
+
+#include <ssc/mechanics/boundary_constraints.h>
+#include <ssc/mechanics/elasticity_parameters.h>
 
 namespace ssc
 {

@@ -1,0 +1,40 @@
+#ifndef ssc_materials_linear_elastic_material_h
+#define ssc_materials_linear_elastic_material_h
+
+#include <ssc/materials/material.h>
+
+namespace ssc
+{
+  /**
+   * Small-strain isotropic linear elasticity,
+   *   sigma = 2 mu dev(eps) + kappa tr(eps) I,  eps = sym(F - I),
+   * assembled by the small-strain kernel. Its isochoric part is
+   * 2 mu dev(eps) with the tangent 2 mu (I^s - 1/3 1 (x) 1) (no geometric
+   * part), its volumetric energy kappa/2 tr(eps)^2.
+   */
+  class LinearElasticMaterial : public Material
+  {
+  public:
+    explicit LinearElasticMaterial(const IsotropicModuli &moduli);
+
+    Kinematics
+    kinematics() const override
+    {
+      return Kinematics::small_strain;
+    }
+
+    void
+    isochoric_response(const Tensor<2, 3>    &F,
+                       SymmetricTensor<2, 3> &tau,
+                       Tensor<4, 3>          &tangent) const override;
+
+    double
+    energy(const Tensor<2, 3> &F) const override;
+
+    SymmetricTensor<2, 3>
+    cauchy_stress(const Tensor<2, 3> &F,
+                  const double        gamma = 1.) const override;
+  };
+} // namespace ssc
+
+#endif

@@ -1,0 +1,115 @@
+#ifndef ssc_materials_material_h
+#define ssc_materials_material_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <ssc/materials/isotropic_moduli.h>
+#include <ssc/materials/volumetric_energy.h>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  /// Which cell kernel assembles a law.
+  enum class Kinematics
+  {
+    /// linear in the displacement gradient (small strain)
+    small_strain,
+    /// a function of the deformation gradient F (finite strain)
+    finite_strain
+  };
+
+  /**
+   * The constitutive law of one layer: stress and consistent tangent from
+   * the deformation gradient F, split into an isochoric part and the
+   * volumetric energy U(J) (VolumetricEnergy), so that the mixed
+   * formulations can replace J by its projection.
+   *
+   * The isochoric part is given in the spatial form the finite-strain kernel
+   * assembles: the Kirchhoff stress tau = P F^T and the spatial tangent
+   *   a_{ikjl} = F_{kK} (dP_{iK} / dF_{jL}) F_{lL}
+   * (geometric part included), so that the linearised virtual work is
+   * grad(du)_{ik} a_{ikjl} grad(Du)_{jl} with current gradients. A law
+   * written in the first Piola form converts with push_forward().
+   *
+   * Growth (F = F_e F_g with F_g = gamma^{1/3} I and the energy gamma W(F_e))
+   * relies on the isochoric part depending on F only through J^{-1/3} F, as
+   * the laws here do: then gamma W_iso(F_e) = gamma W_iso(F).
+   *
+   * A new law is one class derived from this one, an entry in make_material()
+   * and its case in tests/material_tangent.cc.
+   */
+  class Material
+  {
+  public:
+    explicit Material(const IsotropicModuli &moduli);
+
+    virtual ~Material() = default;
+
+    virtual Kinematics
+    kinematics() const = 0;
+
+    /// Isochoric Kirchhoff stress @p tau and spatial tangent @p tangent per
+    /// unit reference volume at @p F (det F > 0).
+    virtual void
+    isochoric_response(const Tensor<2, 3>    &F,
+                       SymmetricTensor<2, 3> &tau,
+                       Tensor<4, 3>          &tangent) const = 0;
+
+    /// Strain energy per unit reference volume at @p F: the isochoric part
+    /// plus U(J).
+    virtual double
+    energy(const Tensor<2, 3> &F) const = 0;
+
+    /// Cauchy stress at @p F with the growth ratio @p gamma = 1 + g
+    /// (stress-free volume change; small-strain laws: sigma of sym(F - I)
+    /// less the eigenstrain): the one stress function that output, section
+    /// sampling and the scenes use.
+    virtual SymmetricTensor<2, 3>
+    cauchy_stress(const Tensor<2, 3> &F, const double gamma = 1.) const;
+
+    /// The tangent of the isochoric part at F = I, minor-symmetric: what the
+    /// small-strain kernel assembles (with the bulk modulus on the
+    /// volumetric strain).
+    SymmetricTensor<4, 3>
+    small_strain_tangent() const;
+
+    const VolumetricEnergy &
+    volumetric() const
+    {
+      return volumetric_energy;
+    }
+
+    /// The small-strain moduli the law reduces to at F = I.
+    const IsotropicModuli &
+    moduli() const
+    {
+      return reference_moduli;
+    }
+
+  protected:
+    const IsotropicModuli  reference_moduli;
+    const VolumetricEnergy volumetric_energy;
+  };
+
+
+  /**
+   * The spatial form of a law given in the first Piola form: from the
+   * stress @p P and its derivative @p A (A_{iKjL} = dP_{iK} / dF_{jL}) at
+   * @p F, the Kirchhoff stress @p tau = P F^T and the spatial tangent
+   * @p tangent of Material::isochoric_response().
+   */
+  void
+  push_forward(const Tensor<2, 3>    &F,
+               const Tensor<2, 3>    &P,
+               const Tensor<4, 3>    &A,
+               SymmetricTensor<2, 3> &tau,
+               Tensor<4, 3>          &tangent);
+
+  /// von Mises equivalent stress of @p sigma.
+  double
+  von_mises(const SymmetricTensor<2, 3> &sigma);
+} // namespace ssc
+
+#endif

@@ -1,0 +1,191 @@
+#ifndef ssc_mechanics_elastic_system_h
+#define ssc_mechanics_elastic_system_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <utility>
+#include <vector>
+
+#include <ssc/materials/layer_materials.h>
+#include <ssc/mechanics/boundary_constraints.h>
+#include <ssc/mechanics/displacement_field.h>
+#include <ssc/mechanics/elasticity_parameters.h>
+#include <ssc/mechanics/growth_field.h>
+#include <ssc/mechanics/linear_solver.h>
+#include <ssc/mechanics/system_assembler.h>
+#include <ssc/mechanics/volume_kernel.h>
+#include <ssc/mesh/background_mesh.h>
+
+namespace ssc
+{
+  /// The external loads of the mechanics: point loads (dof, N) and a body
+  /// force (N/mm^3, none if null).
+  struct Loads
+  {
+    std::vector<std::pair<types::global_dof_index, double>> nodal_forces;
+    const Function<3> *body_force = nullptr;
+  };
+
+  /**
+   * The mechanical system of the layered volume: the displacement field,
+   * its constraints, the growth field, the layers' laws, the one assembly
+   * loop and the linear solver, wired together. It assembles the residual
+   * r = f_int(u) - f_ext (as the right-hand side -r) and the tangent at the
+   * current displacement and solves for updates; Newton's method
+   * (nonlinear/) drives it through ElasticProblem, the linear problem is
+   * the single update of solve_linear(). Times its work as "assembly" and
+   * "solve".
+   */
+  class ElasticSystem
+  {
+  public:
+    ElasticSystem(const BackgroundMesh       &mesh,
+                  const LayerStack           &layers,
+                  const ElasticityParameters &parameters,
+                  TimerOutput                &timer);
+
+    const DisplacementField &
+    field() const
+    {
+      return displacement;
+    }
+
+    DisplacementField &
+    field()
+    {
+      return displacement;
+    }
+
+    /// The constraints (non-const: scenes scale the prescribed values).
+    BoundaryConstraints &
+    constraints()
+    {
+      return boundary_constraints;
+    }
+
+    GrowthField &
+    growth()
+    {
+      return growth_field;
+    }
+
+    const LayerMaterials &
+    materials() const
+    {
+      return layer_materials;
+    }
+
+    /// Adds @p contribution (e.g. embedded septa) to every cell assembly
+    /// from now on; it must outlive this object.
+    void
+    attach(const CellContribution &contribution);
+
+    /// Adds @p contribution (e.g. punch contact) to the sparsity pattern and
+    /// the assemblies; attach before setup().
+    void
+    attach(const DofContribution &contribution);
+
+    /// Constraints, sparsity pattern and matrix for @p conditions and @p
+    /// ties (after the field's dofs are distributed).
+    void
+    setup(const std::vector<DirichletCondition> &conditions,
+          const std::vector<TiedCondition>      &ties = {});
+
+    Loads &
+    loads()
+    {
+      return external_loads;
+    }
+
+    /// Sets the constrained entries of the solution: prescribed values (at
+    /// the current Dirichlet scale), hanging nodes and ties.
+    void
+    apply_constraints();
+
+    /**
+     * Assembles the right-hand side -r at the current solution and, with
+     * @p with_tangent, the tangent; the right-hand side of the tangent
+     * system then also takes the Dirichlet dofs the rest of the way to their
+     * prescribed values. Returns the l2 norm of the right-hand side over the
+     * unconstrained dofs, or infinity if a cell is inverted.
+     */
+    double
+    assemble(const bool with_tangent);
+
+    /// Solves the assembled tangent system for the update (from zero).
+    LinearSolveReport
+    solve_update(const SolveTarget &target);
+
+    /// The update as a trust-region step within @p radius (see
+    /// LinearSolver::solve_within()); the prescribed displacements must have
+    /// been reached.
+    TruncatedCGReport
+    solve_update_within(const double       radius,
+                        const SolveTarget &target,
+                        const bool         new_preconditioner);
+
+    /// The linear problem (small strain): assembles at the current
+    /// solution, solves to the linear solver's tolerance and adds the
+    /// update, which is exact for a linear problem.
+    LinearSolveReport
+    solve_linear();
+
+    /**
+     * Reaction force (N) on the dofs held by condition @p condition (see
+     * BoundaryConstraints::setup()): the residual of the cells and dof
+     * contributions, summed with the weights of a unit field on those dofs
+     * (virtual work; consistent with hanging nodes). This is the force the
+     * body exerts against the condition; the force applied by it is its
+     * negative.
+     */
+    Tensor<1, 3>
+    reaction(const unsigned int condition);
+
+    /// The change of the body's volume, the integral of det F - 1 (div u
+    /// for small-strain layers), mm^3 (collective).
+    double
+    volume_change() const;
+
+    /// The last assembled tangent (Newton's globalisation shifts it).
+    TrilinosWrappers::SparseMatrix &
+    tangent()
+    {
+      return matrix;
+    }
+
+    /// The last assembled right-hand side -r (zero on constrained rows).
+    const TrilinosWrappers::MPI::Vector &
+    rhs() const
+    {
+      return system_rhs;
+    }
+
+    /// The last update (locally owned entries).
+    const TrilinosWrappers::MPI::Vector &
+    update() const
+    {
+      return last_update;
+    }
+
+  private:
+    const ElasticityParameters    &parameters;
+    TimerOutput                   &timer;
+    LayerMaterials                 layer_materials;
+    DisplacementField              displacement;
+    BoundaryConstraints            boundary_constraints;
+    GrowthField                    growth_field;
+    VolumeKernel                   kernel;
+    SystemAssembler                assembler;
+    LinearSolver                   linear_solver;
+    Loads                          external_loads;
+    TrilinosWrappers::SparseMatrix matrix;
+    TrilinosWrappers::MPI::Vector  system_rhs;
+    TrilinosWrappers::MPI::Vector  last_update;
+  };
+} // namespace ssc
+
+#endif

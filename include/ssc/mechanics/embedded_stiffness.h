@@ -1,0 +1,120 @@
+#ifndef ssc_mechanics_embedded_stiffness_h
+#define ssc_mechanics_embedded_stiffness_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <ssc/embedding/clipped_quadrature.h>
+#include <ssc/materials/cable_law.h>
+#include <ssc/materials/membrane_law.h>
+#include <ssc/mechanics/cell_contribution.h>
+
+namespace ssc
+{
+  /**
+   * The stiffness of membranes (septa, codimension 1) or cables (ligaments,
+   * codimension 2) embedded in the background mesh without degrees of
+   * freedom of their own (DESIGN.md §4): their displacement is the
+   * background field at their quadrature points, so their energy (the
+   * MembraneLaw or CableLaw) enters the background cells through the
+   * background shape-function gradients there. Small strain inside
+   * small-strain cells, Green-Lagrange strains (St Venant-Kirchhoff) inside
+   * finite-strain ones.
+   *
+   * The quadrature comes split along the locally owned background cells
+   * (clipped_quadrature()), so each rank assembles its own cells' part.
+   */
+  class EmbeddedStiffness : public CellContribution
+  {
+  public:
+    /// Membranes of law @p law on the pieces @p quadrature.
+    EmbeddedStiffness(const std::vector<CellQuadrature> &quadrature,
+                      const MembraneLaw                 &law,
+                      const FiniteElement<3>            &fe,
+                      const Mapping<3>                  &mapping,
+                      const MPI_Comm                     communicator);
+
+    /// Cables of law @p law on the pieces @p quadrature.
+    EmbeddedStiffness(const std::vector<CellQuadrature> &quadrature,
+                      const CableLaw                    &law,
+                      const FiniteElement<3>            &fe,
+                      const Mapping<3>                  &mapping,
+                      const MPI_Comm                     communicator);
+
+    void
+    add_to_cell(const DoFHandler<3>::active_cell_iterator &cell,
+                const Vector<double>                      &u,
+                const Kinematics                           kinematics,
+                const bool                                 with_matrix,
+                FullMatrix<double>                        &cell_matrix,
+                Vector<double> &cell_residual) const override;
+
+    /// Quadrature points on all ranks.
+    unsigned int
+    n_points() const
+    {
+      return n_global_points;
+    }
+
+  private:
+    /// What one located quadrature point needs for the assembly.
+    struct LocalPoint
+    {
+      Point<3>     unit_point;
+      Tensor<1, 3> direction;
+      double       JxW;
+    };
+
+    void
+    setup_points(const std::vector<CellQuadrature> &quadrature,
+                 const MPI_Comm                     communicator);
+
+    /// Small strain: K u - f with the linear law.
+    void
+    add_linear(const std::vector<LocalPoint> &local,
+               const FEValues<3>             &fe_values,
+               const Vector<double>          &u,
+               FullMatrix<double>            &cell_matrix,
+               Vector<double>                &cell_residual) const;
+
+    /// Finite strain: the cable's Green strain.
+    void
+    add_cable(const std::vector<LocalPoint> &local,
+              const FEValues<3>             &fe_values,
+              const Vector<double>          &u,
+              const bool                     with_matrix,
+              FullMatrix<double>            &cell_matrix,
+              Vector<double>                &cell_residual) const;
+
+    /// Finite strain: the membrane's Green strain.
+    void
+    add_membrane(const std::vector<LocalPoint> &local,
+                 const FEValues<3>             &fe_values,
+                 const Vector<double>          &u,
+                 const bool                     with_matrix,
+                 FullMatrix<double>            &cell_matrix,
+                 Vector<double>                &cell_residual) const;
+
+    /// FEValues with the cell's embedded points (reference gradients).
+    std::unique_ptr<FEValues<3>>
+    reinit_points(const DoFHandler<3>::active_cell_iterator &cell,
+                  const std::vector<LocalPoint>             &local) const;
+
+    std::optional<MembraneLaw>           membrane;
+    std::optional<CableLaw>              cable;
+    const FiniteElement<3>              &fe;
+    const Mapping<3>                    &mapping;
+    std::vector<std::vector<LocalPoint>> points_per_cell;
+    unsigned int                         n_global_points = 0;
+  };
+} // namespace ssc
+
+#endif

@@ -1,0 +1,98 @@
+#ifndef ssc_mechanics_linear_solver_h
+#define ssc_mechanics_linear_solver_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+
+#include <ssc/mechanics/boundary_constraints.h>
+#include <ssc/mechanics/displacement_field.h>
+#include <ssc/mechanics/linear_solver_parameters.h>
+#include <ssc/mechanics/truncated_cg.h>
+
+class Epetra_MultiVector;
+
+namespace ssc
+{
+  /// What one linear solve did.
+  struct LinearSolveReport
+  {
+    unsigned int iterations     = 0;
+    double       final_residual = 0;
+    /// false if CG stopped at its iteration limit with a residual that was
+    /// still acceptable
+    bool reached_target = true;
+  };
+
+  /// The accuracy a solve is asked for: the relative tolerance (at least
+  /// the linear solver's own), not below an absolute floor (N), and the
+  /// residual at which an unfinished solve is still kept (N).
+  struct SolveTarget
+  {
+    double relative_tolerance  = 0.;
+    double absolute_floor      = 0.;
+    double acceptable_residual = 0.;
+  };
+
+  /**
+   * CG with Trilinos ML smoothed-aggregation AMG on the displacement
+   * system, the AMG fed with the six rigid-body modes (translations and
+   * infinitesimal rotations at the dofs' support points) as near-null
+   * space; GMRES where CG breaks down on an indefinite tangent; the
+   * Steihaug-Toint truncated CG for trust-region steps with the same
+   * preconditioner.
+   */
+  class LinearSolver
+  {
+  public:
+    LinearSolver(const LinearSolverParameters &parameters,
+                 const DisplacementField      &field,
+                 const BoundaryConstraints    &constraints);
+    ~LinearSolver();
+
+    /// Builds the AMG hierarchy for @p matrix.
+    void
+    setup_preconditioner(const TrilinosWrappers::SparseMatrix &matrix);
+
+    /**
+     * Solves @p matrix x = @p rhs from the initial guess @p x (its
+     * constrained entries zeroed), to @p target, then distributes @p
+     * constraints. At the iteration limit an error unless the residual is
+     * below the target's acceptable residual. Sets up the preconditioner
+     * first.
+     */
+    LinearSolveReport
+    solve(const TrilinosWrappers::SparseMatrix &matrix,
+          TrilinosWrappers::MPI::Vector        &x,
+          const TrilinosWrappers::MPI::Vector  &rhs,
+          const AffineConstraints<double>      &constraints,
+          const SolveTarget                    &target);
+
+    /**
+     * The trust-region step of truncated_cg() within @p radius in the
+     * preconditioner's norm, to @p target's tolerances; the constrained
+     * entries stay zero, @p constraints are distributed afterwards. With
+     * @p new_preconditioner the AMG is rebuilt for @p matrix first.
+     */
+    TruncatedCGReport
+    solve_within(const TrilinosWrappers::SparseMatrix &matrix,
+                 TrilinosWrappers::MPI::Vector        &step,
+                 const TrilinosWrappers::MPI::Vector  &rhs,
+                 const AffineConstraints<double>      &constraints,
+                 const double                          radius,
+                 const SolveTarget                    &target,
+                 const bool                            new_preconditioner);
+
+  private:
+    const LinearSolverParameters       &parameters;
+    const DisplacementField            &field;
+    const BoundaryConstraints          &constraints;
+    TrilinosWrappers::PreconditionAMG   preconditioner;
+    std::unique_ptr<Epetra_MultiVector> near_null_space;
+  };
+} // namespace ssc
+
+#endif

@@ -1,0 +1,75 @@
+#ifndef ssc_mesh_background_mesh_h
+#define ssc_mesh_background_mesh_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <memory>
+#include <vector>
+
+#include <ssc/mesh/layer_manifold.h>
+#include <ssc/mesh/layer_stack.h>
+#include <ssc/mesh/mesh_parameters.h>
+
+namespace ssc
+{
+  /// Boundary ids of the patch (deal.II's colorized box numbering).
+  namespace BoundaryId
+  {
+    constexpr types::boundary_id x_min = 0, x_max = 1, y_min = 2, y_max = 3,
+                                 bottom = 4, top = 5;
+  } // namespace BoundaryId
+
+  /**
+   * The hexahedral background mesh of the whole layer stack: a patch
+   * [-Lx/2, Lx/2] x [-Ly/2, Ly/2] conforming to every layer interface
+   * (material_id = layer index, 0 = skin), with the LayerManifold attached so
+   * that refinement keeps the interfaces exact.
+   */
+  class BackgroundMesh
+  {
+  public:
+    BackgroundMesh(const LayerStack     &layers,
+                   const MeshParameters &parameters,
+                   const MPI_Comm        mpi_communicator);
+
+    /// Builds the coarse mesh and applies global and local refinement.
+    void
+    build();
+
+    parallel::distributed::Triangulation<3> &
+    triangulation()
+    {
+      return tria;
+    }
+
+    const parallel::distributed::Triangulation<3> &
+    triangulation() const
+    {
+      return tria;
+    }
+
+    /// Symmetric cell sizes over [-L/2, L/2]: uniform of size <= h inside
+    /// the core, growing geometrically by @p ratio outside it.
+    static std::vector<double>
+    graded_steps(const double L,
+                 const double h,
+                 const double core_half_width,
+                 const double ratio);
+
+  private:
+    void
+    refine_region_of_interest();
+
+    /// Throws unless mesh vertices lie on the fitted circle at the surface.
+    void
+    check_fitted_circle() const;
+
+    const LayerStack                       &layers;
+    const MeshParameters                   &parameters;
+    parallel::distributed::Triangulation<3> tria;
+  };
+} // namespace ssc
+
+#endif

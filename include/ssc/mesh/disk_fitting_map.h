@@ -1,0 +1,51 @@
+#ifndef ssc_mesh_disk_fitting_map_h
+#define ssc_mesh_disk_fitting_map_h
+
+#include <deal.II/base/point.h>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  /**
+   * A radial map of the (x, y) plane that takes the square |p|_inf <= a of a
+   * Cartesian mesh onto the disk r <= a and blends back to the identity at
+   * |p|_inf = 2a. Mesh lines on the square's boundary then follow the circle
+   * r = a exactly at every refinement level (the map is applied through the
+   * LayerManifold), so a punch of radius a sees a boundary that conforms to
+   * its edge instead of a staircase of nodes inside it.
+   *
+   * Along a ray with |u|_inf = c for the unit direction u, a point at
+   * distance rho goes to distance R(rho) = rho ((1 - t) c + t), with
+   * t = clamp((rho c - a) / a, 0, 1): monotone, so the inverse is a 1D
+   * bisection. a = 0 is the identity.
+   */
+  class DiskFittingMap
+  {
+  public:
+    explicit DiskFittingMap(const double radius = 0)
+      : a(radius)
+    {}
+
+    Point<2>
+    forward(const Point<2> &p) const;
+
+    Point<2>
+    inverse(const Point<2> &q) const;
+
+    double
+    radius() const
+    {
+      return a;
+    }
+
+  private:
+    /// The radial stretch factor m: R = rho m(rho) along direction u.
+    double
+    stretch(const double rho, const double c) const;
+
+    double a;
+  };
+} // namespace ssc
+
+#endif

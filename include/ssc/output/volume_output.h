@@ -1,0 +1,42 @@
+#ifndef ssc_output_volume_output_h
+#define ssc_output_volume_output_h
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <string>
+#include <vector>
+
+#include <ssc/materials/layer_materials.h>
+#include <ssc/mechanics/displacement_field.h>
+#include <ssc/mechanics/growth_field.h>
+
+namespace ssc
+{
+  /**
+   * The Cauchy stress of every locally owned cell (indexed by active cell
+   * index; zero elsewhere) from the cell's own law: its mean over the
+   * deformed cell, from the law at the quadrature points (small strain for
+   * linear layers, finite strain otherwise, with the growth of @p growth);
+   * NaN in inverted cells. write_volume_vtu() writes these.
+   */
+  std::vector<SymmetricTensor<2, 3>>
+  cell_cauchy_stresses(const DisplacementField &field,
+                       const LayerMaterials    &materials,
+                       const GrowthField       &growth);
+
+  /**
+   * Writes the volume as VTU pieces (one per rank) with a PVTU record: the
+   * displacement, per cell the Cauchy stress of cell_cauchy_stresses(), its
+   * von Mises stress, the layer and the rank. Returns the name of the
+   * record.
+   */
+  std::string
+  write_volume_vtu(const DisplacementField &field,
+                   const LayerMaterials    &materials,
+                   const GrowthField       &growth,
+                   const std::string       &directory,
+                   const std::string       &basename,
+                   const unsigned int       step);
+} // namespace ssc
+
+#endif

@@ -1,0 +1,50 @@
+#ifndef ssc_scenes_indentation_output_h
+#define ssc_scenes_indentation_output_h
+
+#include <vector>
+
+#include <ssc/embedding/point_locator.h>
+#include <ssc/materials/layer_materials.h>
+#include <ssc/mechanics/displacement_field.h>
+#include <ssc/output/run_output.h>
+#include <ssc/parameters.h>
+#include <ssc/scenes/quasi_static_driver.h>
+
+namespace ssc
+{
+  /// The points of the surface profile: y = 0, z = 0, centred in x.
+  std::vector<Point<3>>
+  profile_points(const PunchParameters &punch, const double patch_length);
+
+  /// u_z of @p field at the located points @p locations (collective).
+  std::vector<double>
+  vertical_displacements(const std::vector<PointLocation> &locations,
+                         const DisplacementField          &field);
+
+  /// Writes surface_profile.csv: x, then u_z per load step.
+  void
+  write_surface_profile(const PunchParameters                  &punch,
+                        const std::vector<Point<3>>            &points,
+                        const std::vector<double>              &loads,
+                        const std::vector<std::vector<double>> &profiles,
+                        RunOutput                              &output);
+
+  /// Writes section.csv: displacement and von Mises stress (from each
+  /// layer's own law) on a grid of the plane y = 0 at the current state.
+  void
+  write_section(const Parameters        &parameters,
+                const PointLocator      &locator,
+                const DisplacementField &field,
+                const LayerMaterials    &materials,
+                RunOutput               &output);
+
+  /// Writes force_displacement.csv: per step force, depth and what the
+  /// solvers did.
+  void
+  write_force_displacement(const std::vector<double>         &forces,
+                           const std::vector<double>         &depths,
+                           const std::vector<StepStatistics> &statistics,
+                           RunOutput                         &output);
+} // namespace ssc
+
+#endif

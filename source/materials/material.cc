@@ -1,0 +1,76 @@
+#include <cmath>
+
+#include <ssc/materials/material.h>
+
+namespace ssc
+{
+  Material::Material(const IsotropicModuli &moduli)
+    : reference_moduli(moduli)
+    , volumetric_energy(moduli.bulk_modulus)
+  {}
+
+
+  SymmetricTensor<2, 3>
+  Material::cauchy_stress(const Tensor<2, 3> &F, const double gamma) const
+  {
+    // the energy gamma (W_iso(F) + U(J / gamma)) of growth F_g = gamma^{1/3}
+    // I: tau = gamma tau_iso + J U'(J / gamma) I
+    const double J = determinant(F);
+    Assert(J > 0, ExcMessage("Cauchy stress of an inverted state."));
+    SymmetricTensor<2, 3> tau;
+    Tensor<4, 3>          tangent;
+    isochoric_response(F, tau, tangent);
+    return (gamma * tau + J * volumetric_energy.pressure(J / gamma) *
+                            unit_symmetric_tensor<3>()) /
+           J;
+  }
+
+
+  SymmetricTensor<4, 3>
+  Material::small_strain_tangent() const
+  {
+    SymmetricTensor<2, 3> tau;
+    Tensor<4, 3>          a;
+    isochoric_response(unit_symmetric_tensor<3>(), tau, a);
+    // at F = I the stress vanishes and the tangent of an objective law has
+    // the minor symmetries; symmetrising keeps exactly that part
+    SymmetricTensor<4, 3> c;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int k = i; k < 3; ++k)
+        for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int l = j; l < 3; ++l)
+            c[i][k][j][l] = 0.25 * (a[i][k][j][l] + a[k][i][j][l] +
+                                    a[i][k][l][j] + a[k][i][l][j]);
+    return c;
+  }
+
+
+  void
+  push_forward(const Tensor<2, 3>    &F,
+               const Tensor<2, 3>    &P,
+               const Tensor<4, 3>    &A,
+               SymmetricTensor<2, 3> &tau,
+               Tensor<4, 3>          &tangent)
+  {
+    tau = symmetrize(P * transpose(F));
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int k = 0; k < 3; ++k)
+        for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int l = 0; l < 3; ++l)
+            {
+              double value = 0;
+              for (unsigned int m = 0; m < 3; ++m)
+                for (unsigned int o = 0; o < 3; ++o)
+                  value += F[k][m] * A[i][m][j][o] * F[l][o];
+              tangent[i][k][j][l] = value;
+            }
+  }
+
+
+  double
+  von_mises(const SymmetricTensor<2, 3> &sigma)
+  {
+    const SymmetricTensor<2, 3> s = deviator(sigma);
+    return std::sqrt(1.5 * scalar_product(s, s));
+  }
+} // namespace ssc

@@ -1,0 +1,44 @@
+#include <cmath>
+
+#include <ssc/materials/neo_hookean_material.h>
+
+namespace ssc
+{
+  NeoHookeanMaterial::NeoHookeanMaterial(const IsotropicModuli &moduli)
+    : Material(moduli)
+  {}
+
+
+  void
+  NeoHookeanMaterial::isochoric_response(const Tensor<2, 3>    &F,
+                                         SymmetricTensor<2, 3> &tau,
+                                         Tensor<4, 3>          &tangent) const
+  {
+    Assert(determinant(F) > 0, ExcMessage("det F <= 0"));
+    const double                mu = reference_moduli.shear_modulus;
+    const double                J  = determinant(F);
+    const SymmetricTensor<2, 3> b_bar =
+      std::pow(J, -2. / 3.) * symmetrize(F * transpose(F));
+    const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
+    tau                           = mu * deviator(b_bar);
+    const SymmetricTensor<4, 3> c =
+      2. / 3. * mu * trace(b_bar) *
+        (identity_tensor<3>() - 1. / 3. * outer_product(I, I)) -
+      2. / 3. * (outer_product(tau, I) + outer_product(I, tau));
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int k = 0; k < 3; ++k)
+        for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int l = 0; l < 3; ++l)
+            tangent[i][k][j][l] = c[i][k][j][l] + (i == j ? tau[k][l] : 0.);
+  }
+
+
+  double
+  NeoHookeanMaterial::energy(const Tensor<2, 3> &F) const
+  {
+    const double J = determinant(F);
+    return 0.5 * reference_moduli.shear_modulus *
+             (std::pow(J, -2. / 3.) * scalar_product(F, F) - 3.) +
+           volumetric_energy.volumetric_energy(J);
+  }
+} // namespace ssc

@@ -1,0 +1,278 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <array>
+#include <cmath>
+
+#include <ssc/mechanics/embedded_stiffness.h>
+
+namespace ssc
+{
+  EmbeddedStiffness::EmbeddedStiffness(
+    const std::vector<CellQuadrature> &quadrature,
+    const MembraneLaw                 &law,
+    const FiniteElement<3>            &fe,
+    const Mapping<3>                  &mapping,
+    const MPI_Comm                     communicator)
+    : membrane(law)
+    , fe(fe)
+    , mapping(mapping)
+  {
+    setup_points(quadrature, communicator);
+  }
+
+
+  EmbeddedStiffness::EmbeddedStiffness(
+    const std::vector<CellQuadrature> &quadrature,
+    const CableLaw                    &law,
+    const FiniteElement<3>            &fe,
+    const Mapping<3>                  &mapping,
+    const MPI_Comm                     communicator)
+    : cable(law)
+    , fe(fe)
+    , mapping(mapping)
+  {
+    setup_points(quadrature, communicator);
+  }
+
+
+  void
+  EmbeddedStiffness::setup_points(const std::vector<CellQuadrature> &quadrature,
+                                  const MPI_Comm communicator)
+  {
+    unsigned int n_local = 0;
+    for (const CellQuadrature &cell_quadrature : quadrature)
+      {
+        const unsigned int index = cell_quadrature.cell->active_cell_index();
+        if (points_per_cell.size() <= index)
+          points_per_cell.resize(
+            cell_quadrature.cell->get_triangulation().n_active_cells());
+        for (unsigned int q = 0; q < cell_quadrature.JxW.size(); ++q)
+          {
+            points_per_cell[index].push_back({cell_quadrature.unit_points[q],
+                                              cell_quadrature.directions[q],
+                                              cell_quadrature.JxW[q]});
+            ++n_local;
+          }
+      }
+    n_global_points = Utilities::MPI::sum(n_local, communicator);
+  }
+
+
+  std::unique_ptr<FEValues<3>>
+  EmbeddedStiffness::reinit_points(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const std::vector<LocalPoint>             &local) const
+  {
+    std::vector<Point<3>> units(local.size());
+    for (unsigned int q = 0; q < local.size(); ++q)
+      units[q] = local[q].unit_point;
+    auto fe_values = std::make_unique<FEValues<3>>(mapping,
+                                                   fe,
+                                                   Quadrature<3>(units),
+                                                   update_gradients);
+    fe_values->reinit(cell);
+    return fe_values;
+  }
+
+
+  void
+  EmbeddedStiffness::add_to_cell(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const Vector<double>                      &u,
+    const Kinematics                           kinematics,
+    const bool                                 with_matrix,
+    FullMatrix<double>                        &cell_matrix,
+    Vector<double>                            &cell_residual) const
+  {
+    const unsigned int index = cell->active_cell_index();
+    if (index >= points_per_cell.size() || points_per_cell[index].empty())
+      return;
+    const std::vector<LocalPoint> &local     = points_per_cell[index];
+    const auto                     fe_values = reinit_points(cell, local);
+    AssertDimension(u.size(), fe.n_dofs_per_cell());
+    if (kinematics == Kinematics::small_strain)
+      add_linear(local, *fe_values, u, cell_matrix, cell_residual);
+    else if (cable)
+      add_cable(local, *fe_values, u, with_matrix, cell_matrix, cell_residual);
+    else
+      add_membrane(
+        local, *fe_values, u, with_matrix, cell_matrix, cell_residual);
+  }
+
+
+  void
+  EmbeddedStiffness::add_linear(const std::vector<LocalPoint> &local,
+                                const FEValues<3>             &fe_values,
+                                const Vector<double>          &u,
+                                FullMatrix<double>            &cell_matrix,
+                                Vector<double> &cell_residual) const
+  {
+    // membrane: (t/2) (lambda_ps (P:eps)^2 + 2 mu (P eps P):(P eps P));
+    // cable: (E A / 2) (tau . eps tau)^2
+    const auto [t_lambda, t_two_mu] = membrane ?
+                                        membrane->small_strain_coefficients() :
+                                        std::make_pair(cable->stiffness(), 0.);
+    const unsigned int        n     = fe.n_dofs_per_cell();
+    std::vector<Tensor<2, 3>> strain(n); // tangential part P eps P
+    std::vector<double>       trace(n);
+    FullMatrix<double>        K(n, n);
+    for (unsigned int q = 0; q < local.size(); ++q)
+      {
+        const Tensor<1, 3> &d = local[q].direction;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            const Tensor<1, 3> g = fe_values.shape_grad_component(i, q, c);
+            if (cable)
+              // tau . eps tau with eps = sym(e_c (x) g)
+              trace[i] = d[c] * (d * g);
+            else
+              {
+                // P eps P = sym((P e_c) (x) (P g))
+                Tensor<1, 3> Pe = -d[c] * d;
+                Pe[c] += 1.;
+                const Tensor<1, 3> Pg = g - (d * g) * d;
+                const Tensor<2, 3> a  = outer_product(Pe, Pg);
+                strain[i]             = 0.5 * (a + transpose(a));
+                trace[i]              = Pe * Pg;
+              }
+          }
+        const double first  = local[q].JxW * t_lambda;
+        const double second = local[q].JxW * t_two_mu;
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              double value = first * trace[i] * trace[j];
+              if (membrane)
+                value += second * scalar_product(strain[i], strain[j]);
+              K(i, j) += value;
+            }
+      }
+    // K u - f: the embedded structures carry no load of their own
+    K.vmult_add(cell_residual, u);
+    cell_matrix.add(1., K);
+  }
+
+
+  void
+  EmbeddedStiffness::add_cable(const std::vector<LocalPoint> &local,
+                               const FEValues<3>             &fe_values,
+                               const Vector<double>          &u,
+                               const bool                     with_matrix,
+                               FullMatrix<double>            &cell_matrix,
+                               Vector<double> &cell_residual) const
+  {
+    const unsigned int        n = fe.n_dofs_per_cell();
+    std::vector<unsigned int> component(n);
+    std::vector<Tensor<1, 3>> g(n); // reference gradients
+    std::vector<double>       de(n), gd(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe.system_to_component_index(i).first;
+    for (unsigned int q = 0; q < local.size(); ++q)
+      {
+        Tensor<2, 3> F = unit_symmetric_tensor<3>();
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            g[i] = fe_values.shape_grad_component(i, q, component[i]);
+            F[component[i]] += u(i) * g[i];
+          }
+        // e = (|F tau|^2 - 1) / 2, S = E A e; de/du_i = a_ci (g_i . tau)
+        const Tensor<1, 3> &d = local[q].direction;
+        const Tensor<1, 3>  a = F * d;
+        const double        e = 0.5 * (a * a - 1.);
+        const double        S = local[q].JxW * cable->axial_force(e);
+        const double        k =
+          cable->slack(e) ? 0. : local[q].JxW * cable->stiffness();
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            gd[i] = g[i] * d;
+            de[i] = a[component[i]] * gd[i];
+            cell_residual(i) += S * de[i];
+          }
+        if (with_matrix)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              cell_matrix(i, j) +=
+                k * de[i] * de[j] +
+                (component[i] == component[j] ? S * gd[i] * gd[j] : 0.);
+      }
+  }
+
+
+  void
+  EmbeddedStiffness::add_membrane(const std::vector<LocalPoint> &local,
+                                  const FEValues<3>             &fe_values,
+                                  const Vector<double>          &u,
+                                  const bool                     with_matrix,
+                                  FullMatrix<double>            &cell_matrix,
+                                  Vector<double> &cell_residual) const
+  {
+    const unsigned int        n = fe.n_dofs_per_cell();
+    std::vector<unsigned int> component(n);
+    std::vector<Tensor<1, 3>> g(n); // reference gradients
+    std::vector<Tensor<1, 3>> v(n), Dv(n), b(n), Sb(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe.system_to_component_index(i).first;
+    for (unsigned int q = 0; q < local.size(); ++q)
+      {
+        Tensor<2, 3> F = unit_symmetric_tensor<3>();
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            g[i] = fe_values.shape_grad_component(i, q, component[i]);
+            F[component[i]] += u(i) * g[i];
+          }
+        // E = (P F^T F P - P)/2, S = dW/dE (MembraneLaw::state());
+        // dE_i = sym(a_i (x) b_i), a_i = P F^T e_ci, b_i = P g_i.
+        // Strain variations lie in the tangent plane, whose symmetric
+        // tensors form a space of dimension 3: in the basis
+        // B_k = t1 t1, t2 t2, t1 t2 + t2 t1 (t1, t2 orthonormal in the
+        // plane) dE_i has the coordinates v_i, S:dE_i = s.v_i with
+        // s_k = S:B_k, and d2W[dE_i, dE_j] = v_i.D v_j with
+        // D_kl = d2W[B_k, B_l]: the n^2 tangent entries cost a dot
+        // product of 3-vectors each instead of tensor contractions.
+        const Tensor<1, 3> &d = local[q].direction;
+        Tensor<2, 3>        P = unit_symmetric_tensor<3>();
+        P -= outer_product(d, d);
+        const Tensor<2, 3>       E     = 0.5 * (P * transpose(F) * F * P - P);
+        const Tensor<2, 3>       PFt   = P * transpose(F);
+        const MembraneLaw::State state = membrane->state(E, P, local[q].JxW);
+        const auto [t1, t2]            = MembraneLaw::tangent_basis(d);
+        const std::array<Tensor<2, 3>, 3> basis = {
+          {outer_product(t1, t1),
+           outer_product(t2, t2),
+           outer_product(t1, t2) + outer_product(t2, t1)}};
+        Tensor<1, 3> s;
+        Tensor<2, 3> D;
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            s[k] = scalar_product(state.stress, basis[k]);
+            for (unsigned int l = 0; l < 3; ++l)
+              D[k][l] = state.second_derivative(basis[k], basis[l]);
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            Tensor<1, 3> a;
+            for (unsigned int k = 0; k < 3; ++k)
+              a[k] = PFt[k][component[i]];
+            b[i]            = P * g[i];
+            Sb[i]           = state.stress * b[i];
+            const double a1 = a * t1, a2 = a * t2;
+            const double b1 = b[i] * t1, b2 = b[i] * t2;
+            v[i][0] = a1 * b1;
+            v[i][1] = a2 * b2;
+            v[i][2] = 0.5 * (a1 * b2 + a2 * b1);
+            Dv[i]   = D * v[i];
+            cell_residual(i) += s * v[i];
+          }
+        if (with_matrix)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              cell_matrix(i, j) +=
+                Dv[i] * v[j] +
+                (component[i] == component[j] ? b[j] * Sb[i] : 0.);
+      }
+  }
+} // namespace ssc

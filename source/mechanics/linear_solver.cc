@@ -1,0 +1,187 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+#include <ssc/mechanics/linear_solver.h>
+
+namespace ssc
+{
+  LinearSolver::LinearSolver(const LinearSolverParameters &parameters,
+                             const DisplacementField      &field,
+                             const BoundaryConstraints    &constraints)
+    : parameters(parameters)
+    , field(field)
+    , constraints(constraints)
+  {}
+
+
+  LinearSolver::~LinearSolver()
+  {
+    // The preconditioner references the near-null space: release it first.
+    preconditioner.clear();
+    near_null_space.reset();
+  }
+
+
+  void
+  LinearSolver::setup_preconditioner(
+    const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = field.fe().degree > 1;
+    data.smoother_sweeps       = parameters.smoother_sweeps;
+    data.aggregation_threshold = parameters.aggregation_threshold;
+    // One mask per component: tells ML that there are 3 PDE equations per
+    // node; the null space itself is replaced below.
+    std::vector<std::vector<bool>> translation_modes;
+    DoFTools::extract_constant_modes(field.dof_handler(),
+                                     ComponentMask(3, true),
+                                     translation_modes);
+    data.constant_modes = translation_modes;
+
+    if (!parameters.rigid_body_modes)
+      {
+        preconditioner.initialize(matrix, data);
+        return;
+      }
+
+    Teuchos::ParameterList              ml_list;
+    std::unique_ptr<Epetra_MultiVector> unused;
+    data.set_parameters(ml_list, unused, matrix);
+
+    // Six rigid-body modes evaluated at the support points of the locally
+    // owned dofs: three translations and three infinitesimal rotations.
+    const Epetra_Map &map = matrix.trilinos_matrix().DomainMap();
+    near_null_space       = std::make_unique<Epetra_MultiVector>(map, 6);
+    std::map<types::global_dof_index, Point<3>> support_points;
+    DoFTools::map_dofs_to_support_points(field.mapping(),
+                                         field.dof_handler(),
+                                         support_points);
+    unsigned int local = 0;
+    for (const auto dof : field.locally_owned_dofs())
+      {
+        const Point<3>    &x = support_points.at(dof);
+        const unsigned int c = constraints.component(dof);
+        for (unsigned int m = 0; m < 3; ++m)
+          (*near_null_space)[m][local] = (c == m ? 1. : 0.);
+        // rotations about x, y, z: omega x X
+        const double rot[3][3] = {{0., -x[2], x[1]},
+                                  {x[2], 0., -x[0]},
+                                  {-x[1], x[0], 0.}};
+        for (unsigned int m = 0; m < 3; ++m)
+          (*near_null_space)[3 + m][local] = rot[m][c];
+        ++local;
+      }
+    // Three equations per support point: ML aggregates whole nodes (the
+    // three components of a point are numbered consecutively).
+    ml_list.set("PDE equations", 3);
+    if (!parameters.smoothed_aggregation)
+      ml_list.set("aggregation: damping factor", 0.);
+    ml_list.set("null space: type", "pre-computed");
+    ml_list.set("null space: dimension", near_null_space->NumVectors());
+    ml_list.set("null space: vectors", near_null_space->Values());
+    preconditioner.initialize(matrix, ml_list);
+  }
+
+
+  LinearSolveReport
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                      TrilinosWrappers::MPI::Vector        &x,
+                      const TrilinosWrappers::MPI::Vector  &rhs,
+                      const AffineConstraints<double> &solution_constraints,
+                      const SolveTarget               &target)
+  {
+    setup_preconditioner(matrix);
+    solution_constraints.set_zero(x);
+    const double tolerance =
+      std::max(std::max(parameters.tolerance, target.relative_tolerance) *
+                 rhs.l2_norm(),
+               target.absolute_floor);
+    LinearSolveReport report;
+    SolverControl     control(parameters.max_iterations,
+                          std::max(tolerance, 1e-300),
+                          false,
+                          false);
+    try
+      {
+        try
+          {
+            TrilinosWrappers::SolverCG cg(control);
+            cg.solve(matrix, x, rhs, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            throw;
+          }
+        catch (const ExceptionBase &)
+          {
+            // CG breaks down on an indefinite matrix (a finite-strain
+            // tangent past a stability limit): GMRES does not need
+            // definiteness
+            solution_constraints.set_zero(x);
+            TrilinosWrappers::SolverGMRES gmres(
+              control,
+              TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
+            gmres.solve(matrix, x, rhs, preconditioner);
+          }
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        // the solver's last iterate stays in x
+        report.reached_target = false;
+        if (!(e.last_residual <= target.acceptable_residual))
+          {
+            std::ostringstream message;
+            message << "CG did not converge in " << e.last_step
+                    << " iterations (residual " << std::scientific
+                    << std::setprecision(2) << e.last_residual << ", target "
+                    << control.tolerance()
+                    << "); raise Elasticity/Linear solver/Max iterations or "
+                       "check the model.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+      }
+    solution_constraints.distribute(x);
+    report.iterations     = control.last_step();
+    report.final_residual = control.last_value();
+    return report;
+  }
+
+
+  TruncatedCGReport
+  LinearSolver::solve_within(const TrilinosWrappers::SparseMatrix &matrix,
+                             TrilinosWrappers::MPI::Vector        &step,
+                             const TrilinosWrappers::MPI::Vector  &rhs,
+                             const AffineConstraints<double> &step_constraints,
+                             const double                     radius,
+                             const SolveTarget               &target,
+                             const bool new_preconditioner)
+  {
+    if (new_preconditioner)
+      setup_preconditioner(matrix);
+    const double tolerance =
+      std::max(std::max(parameters.tolerance, target.relative_tolerance) *
+                 rhs.l2_norm(),
+               target.absolute_floor);
+    const TruncatedCGReport report = truncated_cg(
+      matrix,
+      preconditioner,
+      rhs,
+      radius,
+      tolerance,
+      parameters.max_iterations,
+      [&](TrilinosWrappers::MPI::Vector &v) { step_constraints.set_zero(v); },
+      step);
+    step_constraints.distribute(step);
+    return report;
+  }
+} // namespace ssc

@@ -1,0 +1,42 @@
+#include <ssc/mechanics/linear_solver_parameters.h>
+
+namespace ssc
+{
+  void
+  LinearSolverParameters::add_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.add_parameter("Tolerance",
+                      tolerance,
+                      "CG stops when the residual has dropped by this factor "
+                      "relative to the right-hand side.",
+                      Patterns::Double(1e-16, 1));
+    prm.add_parameter("Max iterations",
+                      max_iterations,
+                      "CG iteration limit. Reaching it is an error, but "
+                      "for a Newton update whose residual is already below "
+                      "Nonlinear solver/Acceptable forcing term times the "
+                      "right-hand side or Newton's own tolerance: that "
+                      "update is kept as an inexact step.",
+                      Patterns::Integer(1, 100000));
+    prm.add_parameter("Rigid body modes",
+                      rigid_body_modes,
+                      "Give the AMG preconditioner the six rigid-body modes "
+                      "as near-null space (true) or only the three "
+                      "translations (false, for comparison).");
+    prm.add_parameter("Smoothed aggregation",
+                      smoothed_aggregation,
+                      "Smooth the AMG prolongator (true: fewest CG "
+                      "iterations) or use plain aggregation (false: about "
+                      "35 % less memory, about 1.7 times the iterations).");
+    prm.add_parameter("Aggregation threshold",
+                      aggregation_threshold,
+                      "ML smoothed-aggregation drop tolerance.",
+                      Patterns::Double(0, 1));
+    prm.add_parameter("Smoother sweeps",
+                      smoother_sweeps,
+                      "Chebyshev smoother sweeps per AMG level.",
+                      Patterns::Integer(1, 10));
+    prm.leave_subsection();
+  }
+} // namespace ssc

@@ -1,0 +1,232 @@
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <array>
+
+#include <ssc/mechanics/pressure_basis.h>
+#include <ssc/mechanics/small_strain_kernel.h>
+
+namespace ssc
+{
+  namespace
+  {
+    /**
+     * Gradients, at unit point @p xi of a cell with Jacobian determinant
+     * @p det_J there, of the three Wilson bubbles P_d = 4 xi_d (1 - xi_d)
+     * taken with the centre Jacobian @p J0 (Taylor's modification:
+     * (det J0 / det J) J0^{-T} grad_xi P_d), so that they integrate to zero
+     * over the cell and the element passes the patch test when distorted.
+     */
+    std::array<Tensor<1, 3>, 3>
+    incompatible_mode_gradients(const Tensor<2, 3> &J0,
+                                const Point<3>     &xi,
+                                const double        det_J)
+    {
+      const Tensor<2, 3>          J0_inverse_transpose = transpose(invert(J0));
+      const double                ratio = determinant(J0) / det_J;
+      std::array<Tensor<1, 3>, 3> gradients;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          Tensor<1, 3> reference;
+          reference[d] = 4. * (1. - 2. * xi[d]);
+          gradients[d] = ratio * (J0_inverse_transpose * reference);
+        }
+      return gradients;
+    }
+
+
+    /// Jacobian of the trilinear map of a hexahedron at its centre.
+    Tensor<2, 3>
+    centre_jacobian(const DoFHandler<3>::active_cell_iterator &cell)
+    {
+      Tensor<2, 3> J;
+      for (unsigned int v = 0; v < 8; ++v)
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            // +1/4 on the vertices with xi_d = 1, -1/4 on those with 0
+            const double sign = ((v >> d) & 1) ? 0.25 : -0.25;
+            for (unsigned int i = 0; i < 3; ++i)
+              J[i][d] += sign * cell->vertex(v)[i];
+          }
+      return J;
+    }
+
+
+    /**
+     * Static condensation of the modes n_dofs, ..., n_modes - 1 of @p
+     * matrix and @p rhs (they carry no load of their own but for @p rhs's
+     * entries): K = K_uu - K_ua K_aa^{-1} K_au, f = f_u - K_ua K_aa^{-1} f_a.
+     */
+    void
+    condense(const FullMatrix<double> &matrix,
+             const Vector<double>     &rhs,
+             const unsigned int        n_dofs,
+             FullMatrix<double>       &cell_matrix,
+             Vector<double>           &cell_rhs)
+    {
+      const unsigned int n_modes = matrix.m(), n_a = n_modes - n_dofs;
+      FullMatrix<double> K_ua(n_dofs, n_a), K_aa(n_a, n_a);
+      for (unsigned int i = 0; i < n_modes; ++i)
+        for (unsigned int j = n_dofs; j < n_modes; ++j)
+          (i < n_dofs ? K_ua(i, j - n_dofs) : K_aa(i - n_dofs, j - n_dofs)) =
+            matrix(i, j);
+      K_aa.gauss_jordan();
+      FullMatrix<double> K_aa_inv_K_au(n_a, n_dofs);
+      K_aa.mTmult(K_aa_inv_K_au, K_ua);
+      FullMatrix<double> correction(n_dofs, n_dofs);
+      K_ua.mmult(correction, K_aa_inv_K_au);
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          cell_matrix(i, j) = matrix(i, j) - correction(i, j);
+      Vector<double> f_a(n_a), K_aa_inv_f_a(n_a), f_correction(n_dofs);
+      for (unsigned int a = 0; a < n_a; ++a)
+        f_a(a) = rhs(n_dofs + a);
+      K_aa.vmult(K_aa_inv_f_a, f_a);
+      K_ua.vmult(f_correction, K_aa_inv_f_a);
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        cell_rhs(i) += rhs(i) - f_correction(i);
+    }
+  } // namespace
+
+
+  SmallStrainKernel::SmallStrainKernel(const ElasticityParameters &parameters,
+                                       const Quadrature<3>        &quadrature)
+    : parameters(parameters)
+    , quadrature(quadrature)
+  {}
+
+
+  void
+  SmallStrainKernel::assemble(const DoFHandler<3>::active_cell_iterator &cell,
+                              const FEValues<3>  &fe_values,
+                              const Material     &material,
+                              const GrowthField  &growth,
+                              const Function<3>  *body_force,
+                              FullMatrix<double> &cell_matrix,
+                              Vector<double>     &cell_rhs) const
+  {
+    const FiniteElement<3>          &fe     = fe_values.get_fe();
+    const unsigned int               n_dofs = fe.n_dofs_per_cell();
+    const unsigned int               n_q    = fe_values.n_quadrature_points;
+    const FEValuesExtractors::Vector displacement(0);
+    const bool enhanced = parameters.formulation == Formulation::enhanced;
+    // the volumetric strain is projected unless n_p == 0
+    const unsigned int n_p   = parameters.n_pressure_modes();
+    const bool         mixed = n_p > 0;
+    // the strain modes: the shape functions, then (enhanced) the nine
+    // incompatible modes e_c P_d, condensed out at the end
+    const unsigned int n_modes = n_dofs + (enhanced ? 9 : 0);
+    Assert(cell_matrix.m() == n_dofs && cell_rhs.size() == n_dofs,
+           ExcDimensionMismatch(cell_matrix.m(), n_dofs));
+
+    cell_rhs = 0;
+    FullMatrix<double> matrix(n_modes, n_modes);
+
+    const SymmetricTensor<4, 3> C     = material.small_strain_tangent();
+    const double                kappa = material.moduli().bulk_modulus;
+    const PressureBasis         basis(mixed ? n_p : 1, cell);
+    FullMatrix<double>          mass(n_p, n_p), coupling(n_p, n_modes);
+    std::vector<double>         q_basis(n_p);
+
+    std::vector<SymmetricTensor<2, 3>> eps(n_modes), C_eps(n_modes);
+    std::vector<double>                div(n_modes);
+    Vector<double>                     force(3);
+    // the eigenstrain (g/3) I of growth loads the (projected) volumetric
+    // strain: kappa g div_bar(phi_i) over the strain modes
+    Vector<double>      growth_rhs(n_modes);
+    std::vector<double> growth_moments(n_p, 0.); // int q_a g
+    bool                grows = false;
+    const Tensor<2, 3>  J0 = enhanced ? centre_jacobian(cell) : Tensor<2, 3>();
+
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+            div[i] = trace(eps[i]);
+          }
+        if (enhanced)
+          {
+            const auto g =
+              incompatible_mode_gradients(J0,
+                                          quadrature.point(q),
+                                          JxW / quadrature.weight(q));
+            for (unsigned int d = 0; d < 3; ++d)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  Tensor<2, 3> grad;
+                  grad[c]                 = g[d];
+                  eps[n_dofs + 3 * d + c] = symmetrize(grad);
+                  div[n_dofs + 3 * d + c] = g[d][c];
+                }
+          }
+        // eps:C:eps + kappa div div (the mixed formulations project the
+        // divergence instead: B-bar)
+        const double kappa_q = mixed ? 0. : kappa;
+        const double g       = growth.at(cell, q);
+        grows                = grows || g != 0.;
+        for (unsigned int i = 0; i < n_modes; ++i)
+          {
+            C_eps[i] = C * eps[i];
+            if (!mixed)
+              growth_rhs(i) += kappa * g * div[i] * JxW;
+          }
+        for (unsigned int i = 0; i < n_modes; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            matrix(i, j) +=
+              (C_eps[i] * eps[j] + kappa_q * div[i] * div[j]) * JxW;
+
+        if (body_force != nullptr)
+          {
+            body_force->vector_value(fe_values.quadrature_point(q), force);
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                cell_rhs(i) += fe_values.shape_value(i, q) * force(c) * JxW;
+              }
+          }
+
+        if (mixed)
+          {
+            basis.evaluate(fe_values.quadrature_point(q), q_basis);
+            for (unsigned int a = 0; a < n_p; ++a)
+              {
+                for (unsigned int b = 0; b < n_p; ++b)
+                  mass(a, b) += q_basis[a] * q_basis[b] * JxW;
+                for (unsigned int i = 0; i < n_modes; ++i)
+                  coupling(a, i) += q_basis[a] * div[i] * JxW;
+                growth_moments[a] += q_basis[a] * g * JxW;
+              }
+          }
+      }
+    for (unsigned int i = 0; i < n_modes; ++i)
+      for (unsigned int j = i + 1; j < n_modes; ++j)
+        matrix(i, j) = matrix(j, i);
+
+    if (mixed)
+      {
+        // kappa B^T M^{-1} B: the bulk modulus on the projected divergence
+        mass.gauss_jordan();
+        FullMatrix<double> m_inv_b(n_p, n_modes);
+        mass.mmult(m_inv_b, coupling);
+        FullMatrix<double> volumetric(n_modes, n_modes);
+        coupling.Tmmult(volumetric, m_inv_b);
+        matrix.add(kappa, volumetric);
+        for (unsigned int i = 0; i < n_modes; ++i)
+          for (unsigned int a = 0; a < n_p; ++a)
+            growth_rhs(i) += kappa * m_inv_b(a, i) * growth_moments[a];
+      }
+    if (!grows)
+      growth_rhs = 0;
+
+    if (enhanced)
+      condense(matrix, growth_rhs, n_dofs, cell_matrix, cell_rhs);
+    else
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            cell_matrix(i, j) = matrix(i, j);
+          cell_rhs(i) += growth_rhs(i);
+        }
+  }
+} // namespace ssc

@@ -1,0 +1,165 @@
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+
+#include <cmath>
+
+#include <ssc/mesh/background_mesh.h>
+
+namespace ssc
+{
+  BackgroundMesh::BackgroundMesh(const LayerStack     &layers,
+                                 const MeshParameters &parameters,
+                                 const MPI_Comm        mpi_communicator)
+    : layers(layers)
+    , parameters(parameters)
+    , tria(mpi_communicator,
+           Triangulation<3>::limit_level_difference_at_vertices)
+  {}
+
+
+  std::vector<double>
+  BackgroundMesh::graded_steps(const double L,
+                               const double h,
+                               const double core_half_width,
+                               const double ratio)
+  {
+    const double half = L / 2;
+    if (ratio <= 1. + 1e-12 || core_half_width >= half)
+      {
+        const unsigned int n = std::max(1., std::ceil(L / h - 1e-10));
+        return std::vector<double>(n, L / n);
+      }
+    // one half, from the centre outwards
+    const unsigned int n_core =
+      std::max(1., std::ceil(core_half_width / h - 1e-10));
+    std::vector<double> half_steps(n_core, core_half_width / n_core);
+    const double        remaining = half - core_half_width;
+    std::vector<double> graded;
+    double              size = core_half_width / n_core, sum = 0;
+    while (sum < remaining - 1e-10 * L)
+      {
+        size *= ratio;
+        graded.push_back(size);
+        sum += size;
+      }
+    // scale the graded part so that it ends exactly at the patch edge
+    for (double &g : graded)
+      g *= remaining / sum;
+    half_steps.insert(half_steps.end(), graded.begin(), graded.end());
+
+    std::vector<double> steps(half_steps.rbegin(), half_steps.rend());
+    steps.insert(steps.end(), half_steps.begin(), half_steps.end());
+    return steps;
+  }
+
+
+  void
+  BackgroundMesh::build()
+  {
+    const unsigned int n_layers = layers.n_layers();
+
+    // Vertical steps in the chart (each layer has unit height), listed from
+    // the bottom (zeta = -n_layers) to the top (zeta = 0).
+    std::vector<double> z_steps;
+    for (int l = n_layers - 1; l >= 0; --l)
+      {
+        const Layer        &layer = layers.layer(l);
+        std::vector<double> h(layer.n_cells_across);
+        double              sum = 0;
+        for (unsigned int k = 0; k < h.size(); ++k)
+          sum += (h[k] = std::pow(layer.grading, k)); // k = 0 at the top
+        for (auto it = h.rbegin(); it != h.rend(); ++it)
+          z_steps.push_back(*it / sum);
+      }
+
+    const std::vector<std::vector<double>> steps = {
+      graded_steps(parameters.patch_length_x,
+                   parameters.cell_size,
+                   parameters.core_half_width,
+                   parameters.grading_ratio),
+      graded_steps(parameters.patch_length_y,
+                   parameters.cell_size,
+                   parameters.core_half_width,
+                   parameters.grading_ratio),
+      z_steps};
+
+    Triangulation<3> coarse;
+    GridGenerator::subdivided_hyper_rectangle(
+      coarse,
+      steps,
+      Point<3>(-parameters.patch_length_x / 2,
+               -parameters.patch_length_y / 2,
+               -static_cast<double>(n_layers)),
+      Point<3>(parameters.patch_length_x / 2, parameters.patch_length_y / 2, 0),
+      /*colorize=*/true);
+
+    for (const auto &cell : coarse.active_cell_iterators())
+      cell->set_material_id(std::min<unsigned int>(
+        n_layers - 1,
+        static_cast<unsigned int>(std::floor(-cell->center()[2]))));
+
+    const LayerManifold layer_map(
+      layers, DiskFittingMap(parameters.fitted_circle_radius));
+    GridTools::transform(
+      [&layer_map](const Point<3> &p) { return layer_map.push_forward(p); },
+      coarse);
+    coarse.set_all_manifold_ids(0);
+
+    tria.copy_triangulation(coarse);
+    tria.set_manifold(0, layer_map);
+    tria.refine_global(parameters.global_refinements);
+    refine_region_of_interest();
+    if (parameters.fitted_circle_radius > 0)
+      check_fitted_circle();
+  }
+
+
+  void
+  BackgroundMesh::check_fitted_circle() const
+  {
+    const double a     = parameters.fitted_circle_radius;
+    unsigned int found = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const Point<3> &p = cell->vertex(v);
+            if (std::abs(p[2]) < 1e-12 &&
+                std::abs(std::hypot(p[0], p[1]) - a) < 1e-9 * a)
+              ++found;
+          }
+    found = Utilities::MPI::sum(found, tria.get_communicator());
+    AssertThrow(found >= 8,
+                ExcMessage("Mesh/Fitted circle radius = " + std::to_string(a) +
+                           " mm does not lie on a mesh line of the refined "
+                           "mesh: choose Cell size, Core half width and the "
+                           "refinements so that a is a multiple of the core "
+                           "cell size on the refined mesh."));
+  }
+
+
+  void
+  BackgroundMesh::refine_region_of_interest()
+  {
+    double width = parameters.roi_width;
+    for (unsigned int step = 0; step < parameters.local_refinements; ++step)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const Point<3> c = cell->center();
+              const double   r = std::hypot(c[0], c[1]);
+              const double   lateral =
+                std::max(0., std::abs(r - parameters.roi_radius) - width);
+              const double vertical = std::max(0., -c[2] - width);
+              if (std::hypot(lateral, vertical) <= 0.5 * cell->diameter())
+                cell->set_refine_flag();
+            }
+        tria.execute_coarsening_and_refinement();
+        width *= parameters.roi_shrink;
+      }
+  }
+} // namespace ssc

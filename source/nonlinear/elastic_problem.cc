@@ -1,0 +1,163 @@
+#include <cmath>
+
+#include <ssc/nonlinear/elastic_problem.h>
+
+namespace ssc
+{
+  ElasticProblem::ElasticProblem(ElasticSystem &system)
+    : system(system)
+  {}
+
+
+  double
+  ElasticProblem::residual()
+  {
+    return system.assemble(false);
+  }
+
+
+  double
+  ElasticProblem::tangent()
+  {
+    return system.assemble(true);
+  }
+
+
+  double
+  ElasticProblem::rhs_norm() const
+  {
+    return system.rhs().l2_norm();
+  }
+
+
+  LinearSolveReport
+  ElasticProblem::solve_update(const SolveTarget &target)
+  {
+    return system.solve_update(target);
+  }
+
+
+  TruncatedCGReport
+  ElasticProblem::solve_update_within(const double       radius,
+                                      const SolveTarget &target,
+                                      const bool         new_tangent)
+  {
+    return system.solve_update_within(radius, target, new_tangent);
+  }
+
+
+  void
+  ElasticProblem::shift_tangent(const double shift)
+  {
+    // read the diagonal before the first add leaves the matrix uncompressed
+    TrilinosWrappers::SparseMatrix  &K = system.tangent();
+    const AffineConstraints<double> &constraints =
+      system.constraints().increment();
+    std::vector<std::pair<types::global_dof_index, double>> additions;
+    for (const types::global_dof_index row :
+         system.field().locally_owned_dofs())
+      if (!constraints.is_constrained(row))
+        additions.emplace_back(row, shift * K.diag_element(row));
+    for (const auto &[row, value] : additions)
+      K.add(row, row, value);
+    K.compress(VectorOperation::add);
+  }
+
+
+  ElasticProblem::VectorType
+  ElasticProblem::free_update() const
+  {
+    VectorType du(system.update());
+    system.constraints().increment().set_zero(du);
+    return du;
+  }
+
+
+  double
+  ElasticProblem::update_curvature() const
+  {
+    // with the constrained entries zeroed, du . K du is the quadratic form
+    // of the condensed tangent
+    const VectorType du = free_update();
+    VectorType       K_du(du);
+    system.tangent().vmult(K_du, du);
+    const double norm = du * du;
+    return norm > 0 ? (du * K_du) / norm : 0.;
+  }
+
+
+  double
+  ElasticProblem::slope_along_update() const
+  {
+    // the right-hand side is -r, with zeros on the constrained rows
+    return -(system.rhs() * system.update());
+  }
+
+
+  void
+  ElasticProblem::store_state()
+  {
+    stored_state = system.field().owned_solution();
+  }
+
+
+  void
+  ElasticProblem::set_state_from_stored(const double step)
+  {
+    VectorType u(stored_state);
+    u.add(step, system.update());
+    system.field().set_solution(u);
+  }
+
+
+  void
+  ElasticProblem::restore_state()
+  {
+    system.field().set_solution(stored_state);
+  }
+
+
+  ElasticProblem::VectorType
+  ElasticProblem::state() const
+  {
+    return system.field().owned_solution();
+  }
+
+
+  void
+  ElasticProblem::set_state(const VectorType &state)
+  {
+    system.field().set_solution(state);
+  }
+
+
+  double
+  ElasticProblem::constraint_gap() const
+  {
+    return system.constraints().gap(system.field().solution());
+  }
+
+
+  double
+  ElasticProblem::applied_load() const
+  {
+    double applied = 0.;
+    for (const auto &force : system.loads().nodal_forces)
+      applied += force.second * force.second;
+    return std::sqrt(applied);
+  }
+
+
+  std::string
+  ElasticProblem::describe_update() const
+  {
+    return system.field().describe(free_update());
+  }
+
+
+  std::string
+  ElasticProblem::describe_change(const VectorType &change) const
+  {
+    return system.field().describe(change);
+  }
+} // namespace ssc

@@ -1,0 +1,97 @@
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <string>
+
+#include <ssc/nonlinear/load_stepping.h>
+
+namespace ssc
+{
+  LoadStepper::LoadStepper(NonlinearProblem       &problem,
+                           const NewtonParameters &parameters,
+                           ConditionalOStream     &pcout,
+                           const bool              verbose)
+    : problem(problem)
+    , parameters(parameters)
+    , pcout(pcout)
+    , verbose(verbose)
+    , newton(problem, parameters, pcout, verbose)
+  {}
+
+
+  LoadPathReport
+  LoadStepper::follow(const double                       from,
+                      const double                       to,
+                      double                            &increment,
+                      const std::function<void(double)> &apply_load,
+                      const LoadDependence               dependence)
+  {
+    LoadPathReport report;
+    const double   path     = to - from;
+    double         position = from;
+    increment               = std::min(increment, path);
+    unsigned int increments = 0;
+    while (position < to - 1e-12 * std::abs(path))
+      {
+        AssertThrow(increments < parameters.max_increments,
+                    ExcMessage("Newton's method: the load step from " +
+                               std::to_string(from) + " to " +
+                               std::to_string(to) + " has reached only " +
+                               std::to_string(position) + " after " +
+                               std::to_string(increments) +
+                               " increments (Nonlinear solver/Max "
+                               "increments): the solve crawls."));
+        ++increments;
+        const double next  = std::min(position + increment, to);
+        const auto   start = problem.state();
+        apply_load(next);
+        const NewtonReport result = newton.solve();
+        report.newton_iterations += result.iterations;
+        report.linear_iterations += result.linear_iterations;
+        if (result.converged)
+          {
+            position = next;
+            ++report.steps;
+            report.last_residuals = result.residuals;
+            if (verbose)
+              pcout << "  load " << std::setprecision(6) << position << ": "
+                    << result.iterations << " Newton iterations" << std::endl;
+            if (result.iterations <= parameters.easy_iterations)
+              increment *= parameters.growth_factor;
+            continue;
+          }
+        // The first update of an increment solves with the tangent of the
+        // converged state and a right-hand side that scales with the
+        // increment: if CG fails on it, it fails on any smaller increment
+        // too (the absolute floors of its tolerance lie far below the
+        // smallest increment allowed), and cutting would only crawl.
+        AssertThrow(!(result.linear_failure_at_start &&
+                      dependence == LoadDependence::right_hand_side),
+                    ExcMessage(
+                      "Newton's method failed at load " +
+                      std::to_string(position) + " (" + result.failure +
+                      ") on the first update of the increment. Its "
+                      "tangent is that of the converged state whatever "
+                      "the increment, so a smaller increment cannot "
+                      "help. (Poisson's ratios near 0.5 make the "
+                      "tangent hard for the AMG-preconditioned CG.)"));
+        // back to the last converged state, with half the increment
+        problem.set_state(start);
+        apply_load(position);
+        ++report.cuts;
+        increment *= 0.5;
+        pcout << "  load increment to " << std::setprecision(6) << next
+              << " rejected (" << result.failure << "), cut to " << increment
+              << std::endl;
+        AssertThrow(increment >= parameters.minimum_increment * std::abs(path),
+                    ExcMessage("Newton's method failed at load " +
+                               std::to_string(position) + " (" +
+                               result.failure +
+                               ") and the increment fell below Nonlinear "
+                               "solver/Minimum increment."));
+      }
+    return report;
+  }
+} // namespace ssc

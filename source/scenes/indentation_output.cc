@@ -1,0 +1,121 @@
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+#include <ssc/scenes/indentation_output.h>
+
+namespace ssc
+{
+  std::vector<Point<3>>
+  profile_points(const PunchParameters &punch, const double patch_length)
+  {
+    const double          L = std::min(punch.profile_length, patch_length);
+    const unsigned int    n = punch.profile_points;
+    std::vector<Point<3>> points;
+    for (unsigned int i = 0; i < n; ++i)
+      points.emplace_back(-L / 2 + L * i / (n - 1), 0., 0.);
+    return points;
+  }
+
+
+  std::vector<double>
+  vertical_displacements(const std::vector<PointLocation> &locations,
+                         const DisplacementField          &field)
+  {
+    std::vector<Tensor<1, 3>> u;
+    std::vector<Tensor<2, 3>> gradient;
+    field.evaluate_at(locations, u, gradient);
+    std::vector<double> uz(u.size());
+    for (unsigned int i = 0; i < u.size(); ++i)
+      uz[i] = u[i][2];
+    return uz;
+  }
+
+
+  void
+  write_surface_profile(const PunchParameters                  &punch,
+                        const std::vector<Point<3>>            &points,
+                        const std::vector<double>              &loads,
+                        const std::vector<std::vector<double>> &profiles,
+                        RunOutput                              &output)
+  {
+    std::ostringstream csv;
+    csv << "x_mm";
+    for (const double load : loads)
+      csv << (punch.control == PunchControl::force ? ",uz_mm_at_F" :
+                                                     ",uz_mm_at_depth")
+          << load;
+    csv << '\n' << std::setprecision(8);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        csv << points[i][0];
+        for (const auto &profile : profiles)
+          csv << ',' << profile[i];
+        csv << '\n';
+      }
+    output.write_text("surface_profile.csv", csv.str());
+  }
+
+
+  void
+  write_section(const Parameters        &parameters,
+                const PointLocator      &locator,
+                const DisplacementField &field,
+                const LayerMaterials    &materials,
+                RunOutput               &output)
+  {
+    const LayerStack &layers = parameters.layers;
+    const double      L =
+      std::min(parameters.punch.profile_length, parameters.mesh.patch_length_x);
+    const unsigned int    nx = 121, nz = 81;
+    std::vector<Point<3>> points;
+    for (unsigned int i = 0; i < nx; ++i)
+      {
+        const double x = -L / 2 + L * i / (nx - 1);
+        const double bottom =
+          layers.depth_of_interface(layers.n_layers(), x, 0.);
+        for (unsigned int k = 0; k < nz; ++k)
+          points.emplace_back(x, 0., -bottom * k / (nz - 1));
+      }
+    std::vector<Tensor<1, 3>> u;
+    std::vector<Tensor<2, 3>> gradient;
+    field.evaluate_at(locator.locate(points), u, gradient);
+    std::ostringstream csv;
+    csv << "x_mm,z_mm,layer,ux_mm,uz_mm,von_mises_kPa\n"
+        << std::setprecision(7);
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        const unsigned int l   = layers.layer_at(points[k]);
+        const Material    &law = materials[l];
+        const Tensor<2, 3> F   = unit_symmetric_tensor<3>() + gradient[k];
+        const double       mises =
+          law.kinematics() == Kinematics::small_strain || determinant(F) > 0 ?
+                  von_mises(law.cauchy_stress(F)) :
+                  std::numeric_limits<double>::quiet_NaN();
+        csv << points[k][0] << ',' << points[k][2] << ',' << l << ',' << u[k][0]
+            << ',' << u[k][2] << ',' << 1e3 * mises << '\n';
+      }
+    output.write_text("section.csv", csv.str());
+  }
+
+
+  void
+  write_force_displacement(const std::vector<double>         &forces,
+                           const std::vector<double>         &depths,
+                           const std::vector<StepStatistics> &statistics,
+                           RunOutput                         &output)
+  {
+    std::ostringstream csv;
+    csv << "step,force_N,depth_mm,newton_iterations,linear_iterations,"
+           "load_cuts,wall_time_s\n"
+        << std::setprecision(10);
+    for (unsigned int k = 0; k < forces.size(); ++k)
+      csv << k + 1 << ',' << forces[k] << ',' << depths[k] << ','
+          << statistics[k].newton_iterations << ','
+          << statistics[k].linear_iterations << ',' << statistics[k].cuts << ','
+          << statistics[k].wall_time << '\n';
+    output.write_text("force_displacement.csv", csv.str());
+  }
+} // namespace ssc

@@ -1,0 +1,110 @@
+#include <deal.II/base/function.h>
+
+#include <cmath>
+
+#include <ssc/scenes/punch_loading.h>
+#include <ssc/scenes/support_conditions.h>
+
+namespace ssc
+{
+  PunchLoading::PunchLoading(const Parameters   &parameters,
+                             ElasticSystem      &system,
+                             TimerOutput        &timer,
+                             ConditionalOStream &pcout)
+    : system(system)
+    , by_force(parameters.punch.control == PunchControl::force)
+  {
+    TimerOutput::Scope     t(timer, "setup");
+    const PunchParameters &punch    = parameters.punch;
+    const double           a        = punch.radius;
+    const auto             on_punch = [a](const Point<3> &p) {
+      return std::hypot(p[0], p[1]) <= a * (1. + 1e-10);
+    };
+    std::vector<DirichletCondition> conditions =
+      support_conditions(parameters.elasticity.sides);
+    std::vector<TiedCondition> ties;
+    ComponentMask              components(3, false);
+    if (punch.contact == PunchContact::bonded)
+      {
+        components.set(0, true);
+        components.set(1, true);
+      }
+    // the unit load: 1 mm depth or 1 N. The tie's master is also the
+    // punch's height for the edge contact; under displacement control its
+    // dofs are all prescribed, so the tie only names the master.
+    if (by_force || punch.edge_contact)
+      ties.push_back({BoundaryId::top, 2, on_punch, Point<3>(0, 0, 0)});
+    if (!by_force)
+      components.set(2, true);
+    if (components.n_selected_components() > 0)
+      conditions.push_back({BoundaryId::top,
+                            components,
+                            std::make_shared<Functions::ConstantFunction<3>>(
+                              std::vector<double>{0., 0., by_force ? 0. : -1.}),
+                            on_punch});
+    // the punch's condition: the tie (numbered after the conditions) under
+    // force control, the prescribed displacement otherwise
+    punch_condition = by_force ? conditions.size() : conditions.size() - 1;
+
+    if (punch.edge_contact)
+      {
+        // the surface faces that wrapping around the edge can bring into
+        // contact: up to a radius plus two edge radii beyond the rim
+        const double reach = 2. * a + 2. * punch.edge_radius;
+        contact            = std::make_unique<RigidPunchContact>(
+          PunchGeometry{Point<2>(0, 0), a, punch.edge_radius},
+          punch.contact_penalty,
+          parameters.layers.layer(0).youngs_modulus,
+          reach,
+          system.field().dof_handler(),
+          system.field().mapping(),
+          BoundaryId::top,
+          [&system]() { return system.constraints().master_dof(0); });
+        system.attach(*contact);
+        pcout << "Edge contact: " << contact->n_faces()
+              << " surface faces within " << reach
+              << " mm of the axis, edge radius " << punch.edge_radius << " mm"
+              << std::endl;
+      }
+    system.setup(conditions, ties);
+  }
+
+
+  void
+  PunchLoading::apply(const double load)
+  {
+    if (by_force)
+      {
+        system.apply_constraints();
+        system.loads().nodal_forces = {
+          {system.constraints().master_dof(0), -load}};
+      }
+    else
+      // Newton's first update takes the punch to the new depth
+      system.constraints().set_dirichlet_scale(load);
+  }
+
+
+  double
+  PunchLoading::reaction_force()
+  {
+    return -system.reaction(punch_condition)[2];
+  }
+
+
+  double
+  PunchLoading::force(const double load)
+  {
+    return by_force ? load : reaction_force();
+  }
+
+
+  double
+  PunchLoading::depth(const double load) const
+  {
+    if (!by_force)
+      return load;
+    const types::global_dof_index master = system.constraints().master_dof(0);
+    return -system.field().solution()[master];
+  }
+} // namespace ssc
