@@ -36,7 +36,7 @@ def every_layer(name, value):
 
 # Q2 elements with the mean dilatation, no refinement towards the punch edge
 # (30k DoFs)
-Q2 = {"Elasticity/Degree": "2",
+Q2 = {"Elasticity/Degree": "2", "Elasticity/Formulation": "mean dilatation",
       "Mesh/Region of interest/Local refinements": "0"}
 
 # soft layers above the muscle: skin 1.2 + SAT 2.5 + SM 0.4 + DAT 2 = 6.1 mm

@@ -39,7 +39,7 @@ The runs' folders, with their log.txt, stay in output/large_deformation*/
 (SSC_BUILD_DIR chooses the build, as for ssc.sh).
 
     /usr/bin/python3 benchmarks/large_deformation.py [--refinements N]
-        [--formulation mixed|displacement] [--degree 1|2] [--ranks N]
+        [--formulation mixed|mean dilatation|displacement] [--degree 1|2] [--ranks N]
         [--globalisation "line search"|"trust region"|hybrid]
         [--laws LAW ...] [--contacts CONTACT ...] [--plot-only]
 """
@@ -178,7 +178,7 @@ def plot(rows, path, formulation, degree):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--refinements", type=int, default=1)
-    parser.add_argument("--formulation", choices=["mixed", "displacement"],
+    parser.add_argument("--formulation", choices=["mixed", "mean dilatation", "displacement"],
                         default="mixed")
     parser.add_argument("--degree", type=int, choices=[1, 2], default=1)
     parser.add_argument("--ranks", type=int, default=2)

@@ -7,10 +7,10 @@
 // linear law: its Cauchy stress is the derivative of its energy. A new law
 // gets its case here.
 
-#include <ssc/materials/layer_materials.h>
-
 #include <cmath>
 #include <random>
+
+#include <ssc/materials/layer_materials.h>
 
 #include "tests.h"
 
@@ -51,10 +51,8 @@ namespace
   largest(const Tensor<rank, 3> &T)
   {
     double value = 0;
-    for (unsigned int k = 0; k < Tensor<rank, 3>::n_independent_components;
-         ++k)
-      value = std::max(value,
-                       std::abs(T[T.unrolled_to_component_indices(k)]));
+    for (unsigned int k = 0; k < Tensor<rank, 3>::n_independent_components; ++k)
+      value = std::max(value, std::abs(T[T.unrolled_to_component_indices(k)]));
     return value;
   }
 } // namespace
@@ -87,15 +85,15 @@ main(int argc, char **argv)
                            ssc::MaterialModel::neo_hookean})
     {
       ssc::Layer layer;
-      layer.youngs_modulus = 0.02;
-      layer.poisson_ratio  = 0.45;
-      layer.model          = model;
-      const auto          law  = ssc::make_material(layer);
-      const double        mu   = law->moduli().shear_modulus;
-      const std::string   name = ssc::to_string(model);
-      const double        J    = determinant(F);
-      const Tensor<2, 3>  P_fd = energy_gradient(*law, F);
-      Tensor<2, 3>        P;
+      layer.youngs_modulus    = 0.02;
+      layer.poisson_ratio     = 0.45;
+      layer.model             = model;
+      const auto         law  = ssc::make_material(layer);
+      const double       mu   = law->moduli().shear_modulus;
+      const std::string  name = ssc::to_string(model);
+      const double       J    = determinant(F);
+      const Tensor<2, 3> P_fd = energy_gradient(*law, F);
+      Tensor<2, 3>       P;
       if (law->kinematics() == ssc::Kinematics::small_strain)
         P = Tensor<2, 3>(law->cauchy_stress(F));
       else
@@ -125,9 +123,9 @@ main(int argc, char **argv)
             Tensor<2, 3> plus(F), minus(F);
             plus[j][L] += h;
             minus[j][L] -= h;
-            const Tensor<2, 3> dP = (isochoric_piola(*law, plus) -
-                                     isochoric_piola(*law, minus)) /
-                                    (2 * h);
+            const Tensor<2, 3> dP =
+              (isochoric_piola(*law, plus) - isochoric_piola(*law, minus)) /
+              (2 * h);
             for (unsigned int i = 0; i < 3; ++i)
               for (unsigned int K = 0; K < 3; ++K)
                 A_fd[i][K][j][L] = dP[i][K];
@@ -157,8 +155,7 @@ main(int argc, char **argv)
         law->small_strain_tangent() - isotropic;
       double error = 0;
       for (unsigned int k = 0; k < difference.n_independent_components; ++k)
-        error = std::max(error,
-                         std::abs(difference.access_raw_entry(k)));
+        error = std::max(error, std::abs(difference.access_raw_entry(k)));
       deallog << name << ": small-strain tangent 2 mu (I^s - 1/3 1 (x) 1): "
               << (error < 1e-12 * mu ? "yes" : "no") << std::endl;
     }

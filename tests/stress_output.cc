@@ -21,6 +21,7 @@
 #include <ssc/mesh/background_mesh.h>
 #include <ssc/nonlinear/elastic_problem.h>
 #include <ssc/nonlinear/load_stepping.h>
+#include <ssc/nonlinear/newton_solver.h>
 #include <ssc/output/volume_output.h>
 
 #include "quiet_elasticity.h"
@@ -55,7 +56,7 @@ namespace
               const double             gamma)
   {
     const double mu = E / (2 * (1 + nu)), kappa = E / (3 * (1 - 2 * nu));
-    const double J  = stretch[0] * stretch[1] * stretch[2];
+    const double J = stretch[0] * stretch[1] * stretch[2];
     if (model == ssc::MaterialModel::linear)
       {
         const double trace = stretch[0] + stretch[1] + stretch[2] - 3.;
@@ -122,7 +123,8 @@ main(int argc, char **argv)
           ssc::NewtonParameters newton;
           newton.relative_tolerance = 1e-12;
           ssc::ElasticProblem problem(system);
-          ssc::LoadStepper    stepper(problem, newton, quiet.pcout, false);
+          ssc::NewtonSolver   solver(problem, newton, quiet.pcout, false);
+          ssc::LoadStepper    stepper(solver);
           double              increment = 0.25;
           stepper.follow(
             0.,
@@ -133,10 +135,10 @@ main(int argc, char **argv)
             },
             ssc::LoadDependence::right_hand_side);
         }
-      const auto stresses = ssc::cell_cauchy_stresses(system.field(),
+      const auto stresses      = ssc::cell_cauchy_stresses(system.field(),
                                                       system.materials(),
                                                       system.growth());
-      double largest_error = 0, scale = 0;
+      double     largest_error = 0, scale = 0;
       for (const auto &cell : mesh.triangulation().active_cell_iterators())
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = 0; j < 3; ++j)
@@ -162,18 +164,18 @@ main(int argc, char **argv)
   Tensor<2, 3> F;
   for (unsigned int i = 0; i < 3; ++i)
     F[i][i] = stretch[i];
-  const double          Em = 0.1, num = 0.3, t = 0.1, A = 0.07;
+  const double           Em = 0.1, num = 0.3, t = 0.1, A = 0.07;
   const ssc::MembraneLaw membrane(ssc::IsotropicModuli(Em, num), t, false);
-  const double          lambda_ps = Em * num / (1 - num * num);
-  const double          two_mu    = Em / (1 + num);
-  const double          Ex = 0.5 * (stretch[0] * stretch[0] - 1);
-  const double          Ey = 0.5 * (stretch[1] * stretch[1] - 1);
-  const double          Sx = lambda_ps * (Ex + Ey) + two_mu * Ex;
-  const double          Sy = lambda_ps * (Ex + Ey) + two_mu * Ey;
-  const double          sx = stretch[0] * Sx / stretch[1];
-  const double          sy = stretch[1] * Sy / stretch[0];
-  const double          mises = std::sqrt(sx * sx - sx * sy + sy * sy);
-  const double          written =
+  const double           lambda_ps = Em * num / (1 - num * num);
+  const double           two_mu    = Em / (1 + num);
+  const double           Ex        = 0.5 * (stretch[0] * stretch[0] - 1);
+  const double           Ey        = 0.5 * (stretch[1] * stretch[1] - 1);
+  const double           Sx        = lambda_ps * (Ex + Ey) + two_mu * Ex;
+  const double           Sy        = lambda_ps * (Ex + Ey) + two_mu * Ey;
+  const double           sx        = stretch[0] * Sx / stretch[1];
+  const double           sy        = stretch[1] * Sy / stretch[0];
+  const double           mises     = std::sqrt(sx * sx - sx * sy + sy * sy);
+  const double           written =
     membrane.von_mises_stress(F,
                               Tensor<1, 3>({0., 0., 1.}),
                               ssc::Kinematics::finite_strain);
@@ -182,7 +184,7 @@ main(int argc, char **argv)
           << (std::abs(written - mises) < 1e-12 * mises ? "yes" : "no")
           << std::endl;
   const ssc::CableLaw cable(Em, A, true);
-  const double force = Em * A * Ex * stretch[0];
+  const double        force = Em * A * Ex * stretch[0];
   deallog << "cable along x: axial force " << 1e3 * force
           << " mN, written equals it to 1e-12: "
           << (std::abs(cable.current_force(F,

@@ -26,6 +26,7 @@
 #include <ssc/mesh/background_mesh.h>
 #include <ssc/nonlinear/elastic_problem.h>
 #include <ssc/nonlinear/load_stepping.h>
+#include <ssc/nonlinear/newton_solver.h>
 
 #include "quiet_elasticity.h"
 #include "tests.h"
@@ -115,10 +116,11 @@ main(int argc, char **argv)
                             {ssc::BoundaryId::y_min, y, zero, {}},
                             {ssc::BoundaryId::bottom, z, zero, {}}});
           ssc::ElasticProblem problem(elasticity);
-          ssc::LoadStepper    stepper(problem,
+          ssc::NewtonSolver   newton(problem,
                                    newton_parameters,
                                    quiet.pcout,
                                    false);
+          ssc::LoadStepper    stepper(newton);
           double              increment = 0.1;
           const double        target    = 2. * (lambda - 1.); // length 2 mm
           const auto          report    = stepper.follow(

@@ -4,11 +4,6 @@
 
 namespace ssc
 {
-  CorotationalMaterial::CorotationalMaterial(const IsotropicModuli &moduli)
-    : Material(moduli)
-  {}
-
-
   void
   CorotationalMaterial::polar_decomposition(const Tensor<2, 3> &F,
                                             Tensor<2, 3>       &R,

@@ -2,11 +2,6 @@
 
 namespace ssc
 {
-  LinearElasticMaterial::LinearElasticMaterial(const IsotropicModuli &moduli)
-    : Material(moduli)
-  {}
-
-
   void
   LinearElasticMaterial::isochoric_response(const Tensor<2, 3>    &F,
                                             SymmetricTensor<2, 3> &tau,

@@ -4,11 +4,6 @@
 
 namespace ssc
 {
-  NeoHookeanMaterial::NeoHookeanMaterial(const IsotropicModuli &moduli)
-    : Material(moduli)
-  {}
-
-
   void
   NeoHookeanMaterial::isochoric_response(const Tensor<2, 3>    &F,
                                          SymmetricTensor<2, 3> &tau,

@@ -42,6 +42,8 @@ namespace ssc
   EmbeddedStiffness::setup_points(const std::vector<CellQuadrature> &quadrature,
                                   const MPI_Comm communicator)
   {
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      component.push_back(fe.system_to_component_index(i).first);
     unsigned int n_local = 0;
     for (const CellQuadrature &cell_quadrature : quadrature)
       {
@@ -157,6 +159,23 @@ namespace ssc
   }
 
 
+  Tensor<2, 3>
+  EmbeddedStiffness::deformation_gradient(
+    const FEValues<3>         &fe_values,
+    const unsigned int         q,
+    const Vector<double>      &u,
+    std::vector<Tensor<1, 3>> &gradients) const
+  {
+    Tensor<2, 3> F = unit_symmetric_tensor<3>();
+    for (unsigned int i = 0; i < component.size(); ++i)
+      {
+        gradients[i] = fe_values.shape_grad_component(i, q, component[i]);
+        F[component[i]] += u(i) * gradients[i];
+      }
+    return F;
+  }
+
+
   void
   EmbeddedStiffness::add_cable(const std::vector<LocalPoint> &local,
                                const FEValues<3>             &fe_values,
@@ -166,19 +185,11 @@ namespace ssc
                                Vector<double> &cell_residual) const
   {
     const unsigned int        n = fe.n_dofs_per_cell();
-    std::vector<unsigned int> component(n);
     std::vector<Tensor<1, 3>> g(n); // reference gradients
     std::vector<double>       de(n), gd(n);
-    for (unsigned int i = 0; i < n; ++i)
-      component[i] = fe.system_to_component_index(i).first;
     for (unsigned int q = 0; q < local.size(); ++q)
       {
-        Tensor<2, 3> F = unit_symmetric_tensor<3>();
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            g[i] = fe_values.shape_grad_component(i, q, component[i]);
-            F[component[i]] += u(i) * g[i];
-          }
+        const Tensor<2, 3> F = deformation_gradient(fe_values, q, u, g);
         // e = (|F tau|^2 - 1) / 2, S = E A e; de/du_i = a_ci (g_i . tau)
         const Tensor<1, 3> &d = local[q].direction;
         const Tensor<1, 3>  a = F * d;
@@ -211,19 +222,11 @@ namespace ssc
                                   Vector<double> &cell_residual) const
   {
     const unsigned int        n = fe.n_dofs_per_cell();
-    std::vector<unsigned int> component(n);
     std::vector<Tensor<1, 3>> g(n); // reference gradients
     std::vector<Tensor<1, 3>> v(n), Dv(n), b(n), Sb(n);
-    for (unsigned int i = 0; i < n; ++i)
-      component[i] = fe.system_to_component_index(i).first;
     for (unsigned int q = 0; q < local.size(); ++q)
       {
-        Tensor<2, 3> F = unit_symmetric_tensor<3>();
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            g[i] = fe_values.shape_grad_component(i, q, component[i]);
-            F[component[i]] += u(i) * g[i];
-          }
+        const Tensor<2, 3> F = deformation_gradient(fe_values, q, u, g);
         // E = (P F^T F P - P)/2, S = dW/dE (MembraneLaw::state());
         // dE_i = sym(a_i (x) b_i), a_i = P F^T e_ci, b_i = P g_i.
         // Strain variations lie in the tangent plane, whose symmetric

@@ -42,19 +42,29 @@ namespace ssc
   } // namespace
 
 
-  template <int dim>
-  std::vector<CellQuadrature>
-  MicrostructureCoupling::split(const Triangulation<dim, 3> &mesh,
+  template <int dim, typename Law>
+  std::unique_ptr<EmbeddedStiffness>
+  MicrostructureCoupling::embed(const Triangulation<dim, 3> &mesh,
+                                const Law                   &law,
                                 const unsigned int           n_points,
                                 double                      &covered,
                                 double                      &total)
   {
+    if (mesh.n_active_cells() == 0)
+      return nullptr;
     Timer      clip_timer;
     const auto quadrature =
       clipped_quadrature(mesh, *locator, n_points, covered);
     clip_seconds += clip_timer.wall_time();
     total = measure(mesh);
-    return quadrature;
+    auto stiffness =
+      std::make_unique<EmbeddedStiffness>(quadrature,
+                                          law,
+                                          system.field().fe(),
+                                          system.field().mapping(),
+                                          locator->communicator());
+    system.attach(*stiffness);
+    return stiffness;
   }
 
 
@@ -74,39 +84,21 @@ namespace ssc
         [this](const std::string &line) { pcout << line << std::endl; });
     }
 
-    TimerOutput::Scope       t(timer, "embedding");
-    const DisplacementField &field = system.field();
-    locator =
-      std::make_unique<PointLocator>(field.triangulation(), field.mapping());
-    const MPI_Comm communicator = locator->communicator();
-    if (embedded.septa_stiffness &&
-        microstructure->septa_mesh().n_active_cells() > 0)
-      {
-        septa = std::make_unique<EmbeddedStiffness>(
-          split(microstructure->septa_mesh(),
-                embedded.septum_quadrature,
-                septa_area_covered,
-                septa_area),
-          septum,
-          field.fe(),
-          field.mapping(),
-          communicator);
-        system.attach(*septa);
-      }
-    if (embedded.ligament_stiffness &&
-        microstructure->ligament_mesh().n_active_cells() > 0)
-      {
-        cables = std::make_unique<EmbeddedStiffness>(
-          split(microstructure->ligament_mesh(),
-                embedded.ligament_quadrature,
-                ligament_length_covered,
-                ligament_length),
-          ligament,
-          field.fe(),
-          field.mapping(),
-          communicator);
-        system.attach(*cables);
-      }
+    TimerOutput::Scope t(timer, "embedding");
+    locator = std::make_unique<PointLocator>(system.field().triangulation(),
+                                             system.field().mapping());
+    if (embedded.septa_stiffness)
+      septa = embed(microstructure->septa_mesh(),
+                    septum,
+                    embedded.septum_quadrature,
+                    septa_area_covered,
+                    septa_area);
+    if (embedded.ligament_stiffness)
+      cables = embed(microstructure->ligament_mesh(),
+                     ligament,
+                     embedded.ligament_quadrature,
+                     ligament_length_covered,
+                     ligament_length);
     pcout << "Embedded: " << (septa ? septa->n_points() : 0)
           << " septa quadrature points (" << septa_area_covered << " of "
           << septa_area << " mm^2), " << (cables ? cables->n_points() : 0)

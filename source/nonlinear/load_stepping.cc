@@ -9,18 +9,6 @@
 
 namespace ssc
 {
-  LoadStepper::LoadStepper(NonlinearProblem       &problem,
-                           const NewtonParameters &parameters,
-                           ConditionalOStream     &pcout,
-                           const bool              verbose)
-    : problem(problem)
-    , parameters(parameters)
-    , pcout(pcout)
-    , verbose(verbose)
-    , newton(problem, parameters, pcout, verbose)
-  {}
-
-
   LoadPathReport
   LoadStepper::follow(const double                       from,
                       const double                       to,
@@ -28,11 +16,14 @@ namespace ssc
                       const std::function<void(double)> &apply_load,
                       const LoadDependence               dependence)
   {
-    LoadPathReport report;
-    const double   path     = to - from;
-    double         position = from;
-    increment               = std::min(increment, path);
-    unsigned int increments = 0;
+    NonlinearProblem       &problem    = newton.get_problem();
+    const NewtonParameters &parameters = newton.get_parameters();
+    ConditionalOStream     &pcout      = newton.progress();
+    LoadPathReport          report;
+    const double            path     = to - from;
+    double                  position = from;
+    increment                        = std::min(increment, path);
+    unsigned int increments          = 0;
     while (position < to - 1e-12 * std::abs(path))
       {
         AssertThrow(increments < parameters.max_increments,
@@ -55,7 +46,7 @@ namespace ssc
             position = next;
             ++report.steps;
             report.last_residuals = result.residuals;
-            if (verbose)
+            if (newton.reports_iterations())
               pcout << "  load " << std::setprecision(6) << position << ": "
                     << result.iterations << " Newton iterations" << std::endl;
             if (result.iterations <= parameters.easy_iterations)

@@ -1,5 +1,7 @@
 #include <deal.II/base/utilities.h>
 
+#include <functional>
+
 #include <ssc/output/microstructure_output.h>
 
 namespace ssc
@@ -21,52 +23,74 @@ namespace ssc
   }
 
 
+  namespace
+  {
+    /// Writes <family>_<step>.vtu with @p writer: the measure @p name of
+    /// the structure's law and the structure's id (@p id_name), and records
+    /// it in <family>.pvd.
+    template <int dim>
+    void
+    write_family(const EmbeddedFieldWriter<dim>                    &writer,
+                 const std::string                                 &family,
+                 const std::string                                 &name,
+                 const std::function<double(const Tensor<2, 3> &,
+                                            const Tensor<1, 3> &)> &measure,
+                 const std::string                                 &id_name,
+                 const DisplacementField                           &field,
+                 RunOutput                                         &output,
+                 const unsigned int                                 step,
+                 const double                                       time)
+    {
+      const std::string file =
+        family + "_" + Utilities::int_to_string(step, 4) + ".vtu";
+      writer.write(output.path(file),
+                   field,
+                   {{name,
+                     [&](const Tensor<2, 3> &F,
+                         const Tensor<1, 3> &direction,
+                         types::material_id) { return measure(F, direction); }},
+                    {id_name,
+                     [](const Tensor<2, 3> &,
+                        const Tensor<1, 3> &,
+                        const types::material_id material) {
+                       return double(material);
+                     }}});
+      output.add_pvd_record(family, time, file);
+    }
+  } // namespace
+
+
   void
   MicrostructureOutput::write(const DisplacementField &field,
                               RunOutput               &output,
                               const unsigned int       step,
                               const double             time) const
   {
-    const auto id = [](const Tensor<2, 3> &,
-                       const Tensor<1, 3> &,
-                       const types::material_id material) {
-      return double(material);
-    };
     if (septa_writer)
-      {
-        const MembraneLaw &law = coupling.septum_law();
-        const std::string  file =
-          "septa_" + Utilities::int_to_string(step, 4) + ".vtu";
-        septa_writer->write(output.path(file),
-                            field,
-                            {{"membrane_stress_von_mises",
-                              [&](const Tensor<2, 3> &F,
-                                  const Tensor<1, 3> &normal,
-                                  types::material_id) {
-                                return law.von_mises_stress(F,
-                                                            normal,
-                                                            kinematics);
-                              }},
-                             {"septum", id}});
-        output.add_pvd_record("septa", time, file);
-      }
+      write_family<2>(
+        *septa_writer,
+        "septa",
+        "membrane_stress_von_mises",
+        [this](const Tensor<2, 3> &F, const Tensor<1, 3> &normal) {
+          return coupling.septum_law().von_mises_stress(F, normal, kinematics);
+        },
+        "septum",
+        field,
+        output,
+        step,
+        time);
     if (ligament_writer)
-      {
-        const CableLaw   &law = coupling.ligament_law();
-        const std::string file =
-          "ligaments_" + Utilities::int_to_string(step, 4) + ".vtu";
-        ligament_writer->write(output.path(file),
-                               field,
-                               {{"axial_force_N",
-                                 [&](const Tensor<2, 3> &F,
-                                     const Tensor<1, 3> &tangent,
-                                     types::material_id) {
-                                   return law.current_force(F,
-                                                            tangent,
-                                                            kinematics);
-                                 }},
-                                {"ligament", id}});
-        output.add_pvd_record("ligaments", time, file);
-      }
+      write_family<1>(
+        *ligament_writer,
+        "ligaments",
+        "axial_force_N",
+        [this](const Tensor<2, 3> &F, const Tensor<1, 3> &tangent) {
+          return coupling.ligament_law().current_force(F, tangent, kinematics);
+        },
+        "ligament",
+        field,
+        output,
+        step,
+        time);
   }
 } // namespace ssc

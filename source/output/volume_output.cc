@@ -19,12 +19,12 @@ namespace ssc
     const QGauss<3> quadrature(field.fe().degree + 1);
     AssertThrow(growth.n_points() == quadrature.size(),
                 ExcMessage("The growth field is sampled at other points."));
-    FEValues<3>                      fe_values(field.mapping(),
+    FEValues<3>                        fe_values(field.mapping(),
                           field.fe(),
                           quadrature,
                           update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<Tensor<2, 3>>        gradients(quadrature.size());
+    const FEValuesExtractors::Vector   displacement(0);
+    std::vector<Tensor<2, 3>>          gradients(quadrature.size());
     std::vector<SymmetricTensor<2, 3>> stresses(
       field.triangulation().n_active_cells());
     for (const auto &cell : field.dof_handler().active_cell_iterators())
@@ -34,17 +34,15 @@ namespace ssc
           fe_values[displacement].get_function_gradients(field.solution(),
                                                          gradients);
           const Material &law = materials[cell->material_id()];
-          const bool      finite =
-            law.kinematics() == Kinematics::finite_strain;
+          const bool finite   = law.kinematics() == Kinematics::finite_strain;
           // the mean of sigma over the deformed cell: weights J dV (dV at
           // small strain)
           SymmetricTensor<2, 3> sigma;
           double                volume = 0;
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
-              const Tensor<2, 3> F =
-                unit_symmetric_tensor<3>() + gradients[q];
-              const double J = finite ? determinant(F) : 1.;
+              const Tensor<2, 3> F = unit_symmetric_tensor<3>() + gradients[q];
+              const double       J = finite ? determinant(F) : 1.;
               if (!(J > 0))
                 {
                   volume = std::numeric_limits<double>::quiet_NaN();
@@ -68,8 +66,8 @@ namespace ssc
                    const std::string       &basename,
                    const unsigned int       step)
   {
-    const auto        &tria    = field.triangulation();
-    const unsigned int n_cells = tria.n_active_cells();
+    const auto                              &tria    = field.triangulation();
+    const unsigned int                       n_cells = tria.n_active_cells();
     const std::vector<SymmetricTensor<2, 3>> sigma =
       cell_cauchy_stresses(field, materials, growth);
     std::vector<Vector<float>> stress(6, Vector<float>(n_cells));

@@ -13,13 +13,6 @@
 
 namespace ssc
 {
-  GeometryScene::GeometryScene(const Parameters &parameters,
-                               const MPI_Comm    mpi_communicator)
-    : parameters(parameters)
-    , mpi_communicator(mpi_communicator)
-  {}
-
-
   namespace
   {
     /// The background mesh with its layer index per cell (VTU + PVTU).

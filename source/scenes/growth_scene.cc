@@ -16,13 +16,6 @@
 
 namespace ssc
 {
-  GrowthScene::GrowthScene(const Parameters &parameters,
-                           const MPI_Comm    mpi_communicator)
-    : parameters(parameters)
-    , mpi_communicator(mpi_communicator)
-  {}
-
-
   namespace
   {
     /// The grid of the skin surface (z = 0) on which the elevation is
@@ -69,13 +62,12 @@ namespace ssc
     const RunParameters    &run    = parameters.run;
     const GrowthParameters &growth = parameters.growth;
     SceneRun                scene(parameters, mpi_communicator, "growth");
-    RunOutput              &output = scene.output();
-    ConditionalOStream     &pcout  = scene.pcout();
-    TimerOutput            &timer  = scene.timer();
-
-    MechanicsModel          model(parameters, mpi_communicator, timer, pcout);
+    MechanicsModel          model(parameters, scene);
     ElasticSystem          &system   = model.system();
     MicrostructureCoupling &coupling = model.coupling();
+    RunOutput              &output   = scene.output();
+    ConditionalOStream     &pcout    = scene.pcout();
+    TimerOutput            &timer    = scene.timer();
 
     GrowthResult result;
     {

@@ -15,13 +15,6 @@
 
 namespace ssc
 {
-  IndentationScene::IndentationScene(const Parameters &parameters,
-                                     const MPI_Comm    mpi_communicator)
-    : parameters(parameters)
-    , mpi_communicator(mpi_communicator)
-  {}
-
-
   double
   IndentationScene::half_space_stiffness(const double       a,
                                          const double       E,
@@ -45,13 +38,12 @@ namespace ssc
     const RunParameters   &run   = parameters.run;
     const PunchParameters &punch = parameters.punch;
     SceneRun               scene(parameters, mpi_communicator, "indentation");
-    RunOutput             &output = scene.output();
-    ConditionalOStream    &pcout  = scene.pcout();
+    MechanicsModel         model(parameters, scene);
+    ElasticSystem         &system = model.system();
     TimerOutput           &timer  = scene.timer();
-
-    MechanicsModel    model(parameters, mpi_communicator, timer, pcout);
-    ElasticSystem    &system = model.system();
-    PunchLoading      loading(parameters, system, timer, pcout);
+    ConditionalOStream    &pcout  = scene.pcout();
+    RunOutput             &output = scene.output();
+    PunchLoading           loading(parameters, system, timer, pcout);
     QuasiStaticDriver driver(system, parameters.newton, pcout, !run.test_mode);
     const MicrostructureOutput microstructure_output(
       model.coupling(),

@@ -2,14 +2,13 @@
 
 namespace ssc
 {
-  MechanicsModel::MechanicsModel(const Parameters   &parameters,
-                                 const MPI_Comm      mpi_communicator,
-                                 TimerOutput        &timer,
-                                 ConditionalOStream &pcout)
+  MechanicsModel::MechanicsModel(const Parameters &parameters, SceneRun &scene)
   {
+    TimerOutput        &timer = scene.timer();
+    ConditionalOStream &pcout = scene.pcout();
     background_mesh = std::make_unique<BackgroundMesh>(parameters.layers,
                                                        parameters.mesh,
-                                                       mpi_communicator);
+                                                       scene.communicator());
     {
       TimerOutput::Scope t(timer, "mesh");
       background_mesh->build();

@@ -12,9 +12,7 @@ namespace ssc
                                        const bool              verbose)
     : system(system)
     , problem(system)
-    , parameters(parameters)
-    , pcout(pcout)
-    , verbose(verbose)
+    , newton(problem, parameters, pcout, verbose)
   {}
 
 
@@ -62,7 +60,7 @@ namespace ssc
         return;
       }
 
-    LoadStepper stepper(problem, parameters, pcout, verbose);
+    LoadStepper stepper(newton);
     apply_load(0.);
     system.apply_constraints();
     double position = 0., increment = first_increment;

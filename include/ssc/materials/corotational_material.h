@@ -26,7 +26,7 @@ namespace ssc
   class CorotationalMaterial : public Material
   {
   public:
-    explicit CorotationalMaterial(const IsotropicModuli &moduli);
+    using Material::Material;
 
     Kinematics
     kinematics() const override

@@ -15,7 +15,7 @@ namespace ssc
   class LinearElasticMaterial : public Material
   {
   public:
-    explicit LinearElasticMaterial(const IsotropicModuli &moduli);
+    using Material::Material;
 
     Kinematics
     kinematics() const override

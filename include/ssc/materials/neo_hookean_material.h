@@ -19,7 +19,7 @@ namespace ssc
   class NeoHookeanMaterial : public Material
   {
   public:
-    explicit NeoHookeanMaterial(const IsotropicModuli &moduli);
+    using Material::Material;
 
     Kinematics
     kinematics() const override

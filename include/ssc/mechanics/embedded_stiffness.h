@@ -103,15 +103,25 @@ namespace ssc
                  FullMatrix<double>            &cell_matrix,
                  Vector<double>                &cell_residual) const;
 
+    /// F = I + grad u at embedded point @p q, with the reference gradients
+    /// of the shape functions (of their own component) into @p gradients.
+    Tensor<2, 3>
+    deformation_gradient(const FEValues<3>         &fe_values,
+                         const unsigned int         q,
+                         const Vector<double>      &u,
+                         std::vector<Tensor<1, 3>> &gradients) const;
+
     /// FEValues with the cell's embedded points (reference gradients).
     std::unique_ptr<FEValues<3>>
     reinit_points(const DoFHandler<3>::active_cell_iterator &cell,
                   const std::vector<LocalPoint>             &local) const;
 
-    std::optional<MembraneLaw>           membrane;
-    std::optional<CableLaw>              cable;
-    const FiniteElement<3>              &fe;
-    const Mapping<3>                    &mapping;
+    std::optional<MembraneLaw> membrane;
+    std::optional<CableLaw>    cable;
+    const FiniteElement<3>    &fe;
+    const Mapping<3>          &mapping;
+    /// The displacement component of each of a cell's dofs.
+    std::vector<unsigned int>            component;
     std::vector<std::vector<LocalPoint>> points_per_cell;
     unsigned int                         n_global_points = 0;
   };

@@ -6,6 +6,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <functional>
 #include <vector>
 
@@ -70,6 +72,16 @@ namespace ssc
     volume(const DisplacementField &field) const;
 
   private:
+    /// Calls f(index into values, fe_values, q) at every quadrature point
+    /// of the locally owned cells of @p field, @p fe_values reinit'ed with
+    /// @p flags.
+    void
+    for_each_point(
+      const DisplacementField &field,
+      const UpdateFlags        flags,
+      const std::function<void(unsigned int, const FEValues<3> &, unsigned int)>
+        &f) const;
+
     /// g at the quadrature points, cell by cell (active cell index times
     /// the points per cell); empty without growth.
     std::vector<double> values;

@@ -89,11 +89,13 @@ namespace ssc
 
   private:
     /// Splits @p mesh along the background cells into the quadrature of
-    /// @p n_points per direction; @p covered and @p total are the measure
-    /// in the quadrature and of the mesh.
-    template <int dim>
-    std::vector<CellQuadrature>
-    split(const Triangulation<dim, 3> &mesh,
+    /// @p n_points per direction, attaches the stiffness of @p law there to
+    /// the system and returns it (null for an empty mesh); @p covered and
+    /// @p total are the measure in the quadrature and of the mesh.
+    template <int dim, typename Law>
+    std::unique_ptr<EmbeddedStiffness>
+    embed(const Triangulation<dim, 3> &mesh,
+          const Law                   &law,
           const unsigned int           n_points,
           double                      &covered,
           double                      &total);

@@ -44,10 +44,11 @@ namespace ssc
   class LoadStepper
   {
   public:
-    LoadStepper(NonlinearProblem       &problem,
-                const NewtonParameters &parameters,
-                ConditionalOStream     &pcout,
-                const bool              verbose);
+    /// Solves each increment with @p newton (and its problem, parameters
+    /// and progress stream).
+    explicit LoadStepper(NewtonSolver &newton)
+      : newton(newton)
+    {}
 
     /**
      * Follows the load from @p from to @p to; @p apply_load sets the load
@@ -65,11 +66,7 @@ namespace ssc
            const LoadDependence               dependence);
 
   private:
-    NonlinearProblem       &problem;
-    const NewtonParameters &parameters;
-    ConditionalOStream     &pcout;
-    const bool              verbose;
-    NewtonSolver            newton;
+    NewtonSolver &newton;
   };
 } // namespace ssc
 

@@ -50,6 +50,31 @@ namespace ssc
     NewtonReport
     solve();
 
+    NonlinearProblem &
+    get_problem() const
+    {
+      return problem;
+    }
+
+    const NewtonParameters &
+    get_parameters() const
+    {
+      return parameters;
+    }
+
+    /// The progress stream, and whether iterations are reported on it.
+    ConditionalOStream &
+    progress() const
+    {
+      return pcout;
+    }
+
+    bool
+    reports_iterations() const
+    {
+      return verbose;
+    }
+
   private:
     /// The state of one solve.
     struct Iteration;

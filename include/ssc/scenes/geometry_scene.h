@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <ssc/parameters.h>
+#include <ssc/scenes/scene.h>
 
 namespace ssc
 {
@@ -14,18 +15,13 @@ namespace ssc
    * lobules per layer, mean faces per lobule, septa area per unit volume per
    * layer, the ligament count and timings.
    */
-  class GeometryScene
+  class GeometryScene : public Scene
   {
   public:
-    GeometryScene(const Parameters &parameters,
-                  const MPI_Comm    mpi_communicator);
+    using Scene::Scene;
 
     void
     run();
-
-  private:
-    const Parameters &parameters;
-    MPI_Comm          mpi_communicator;
   };
 } // namespace ssc
 

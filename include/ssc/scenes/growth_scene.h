@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <ssc/parameters.h>
+#include <ssc/scenes/scene.h>
 #include <ssc/scenes/surface_metrics.h>
 
 namespace ssc
@@ -33,17 +34,13 @@ namespace ssc
    * and ligament fields when the microstructure is on, parameters.prm,
    * log.txt.
    */
-  class GrowthScene
+  class GrowthScene : public Scene
   {
   public:
-    GrowthScene(const Parameters &parameters, const MPI_Comm mpi_communicator);
+    using Scene::Scene;
 
     GrowthResult
     run();
-
-  private:
-    const Parameters &parameters;
-    MPI_Comm          mpi_communicator;
   };
 } // namespace ssc
 

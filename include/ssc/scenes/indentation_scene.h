@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <ssc/parameters.h>
+#include <ssc/scenes/scene.h>
 
 namespace ssc
 {
@@ -33,11 +34,10 @@ namespace ssc
    * y = 0 at the last step), volume.pvd, septa.pvd and ligaments.pvd when
    * the microstructure is on, parameters.prm, log.txt.
    */
-  class IndentationScene
+  class IndentationScene : public Scene
   {
   public:
-    IndentationScene(const Parameters &parameters,
-                     const MPI_Comm    mpi_communicator);
+    using Scene::Scene;
 
     IndentationResult
     run();
@@ -50,10 +50,6 @@ namespace ssc
                          const double       E,
                          const double       nu,
                          const PunchContact contact);
-
-  private:
-    const Parameters &parameters;
-    MPI_Comm          mpi_communicator;
   };
 } // namespace ssc
 

@@ -11,6 +11,7 @@
 #include <ssc/mechanics/microstructure_coupling.h>
 #include <ssc/mesh/background_mesh.h>
 #include <ssc/parameters.h>
+#include <ssc/scenes/scene_run.h>
 
 namespace ssc
 {
@@ -23,10 +24,8 @@ namespace ssc
   class MechanicsModel
   {
   public:
-    MechanicsModel(const Parameters   &parameters,
-                   const MPI_Comm      mpi_communicator,
-                   TimerOutput        &timer,
-                   ConditionalOStream &pcout);
+    /// Builds the model of @p parameters, timed and reported by @p scene.
+    MechanicsModel(const Parameters &parameters, SceneRun &scene);
 
     BackgroundMesh &
     mesh()

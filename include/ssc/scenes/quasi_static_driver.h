@@ -12,6 +12,7 @@
 #include <ssc/nonlinear/elastic_problem.h>
 #include <ssc/nonlinear/load_stepping.h>
 #include <ssc/nonlinear/newton_parameters.h>
+#include <ssc/nonlinear/newton_solver.h>
 
 namespace ssc
 {
@@ -74,9 +75,7 @@ namespace ssc
   private:
     ElasticSystem              &system;
     ElasticProblem              problem;
-    const NewtonParameters     &parameters;
-    ConditionalOStream         &pcout;
-    const bool                  verbose;
+    NewtonSolver                newton;
     std::vector<StepStatistics> steps;
   };
 } // namespace ssc

@@ -46,6 +46,12 @@ namespace ssc
       return phase_timer;
     }
 
+    MPI_Comm
+    communicator() const
+    {
+      return mpi_communicator;
+    }
+
     /// summary.json with the keys every scene has (embedded counts and
     /// solver statistics zero until the scene sets them); the scene adds its
     /// own results. Collective: phase times are the slowest rank's.
