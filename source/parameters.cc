@@ -7,6 +7,7 @@
 
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/microstructure/ligaments.h>
+#include <ssc/model_size.h>
 #include <ssc/parameters.h>
 
 namespace ssc
@@ -58,12 +59,21 @@ namespace ssc
   parse_with_includes(ParameterHandler  &prm,
                       const std::string &file,
                       const bool         skip_undefined,
-                      const unsigned int depth)
+                      const unsigned int depth,
+                      unsigned int      &n_files)
   {
     AssertThrow(depth < 16,
                 ExcMessage("'include' statements nested more than 16 deep "
                            "(does " +
                            file + " include itself?)."));
+    // each file may include others several times: bound the total, or a
+    // fan-out of a few files would take forever
+    AssertThrow(++n_files <= 1000,
+                ExcMessage("More than 1000 parameter files read through "
+                           "'include' statements (last: " +
+                           file +
+                           "): does a file include the same files "
+                           "repeatedly?"));
     std::ifstream input(file);
     AssertThrow(input,
                 ExcMessage("Cannot open the parameter file '" + file + "'."));
@@ -107,10 +117,8 @@ namespace ssc
                         ExcMessage(file + ", line " + std::to_string(i + 1) +
                                    ": cannot open the included file '" +
                                    included.string() + "'."));
-            parse_with_includes(prm,
-                                included.string(),
-                                skip_undefined,
-                                depth + 1);
+            parse_with_includes(
+              prm, included.string(), skip_undefined, depth + 1, n_files);
           }
       }
     parse_piece(begin, lines.size());
@@ -130,6 +138,7 @@ namespace ssc
     microstructure.add_parameters(handler);
     embedded.add_parameters(handler);
     newton.add_parameters(handler);
+    limits.add_parameters(handler);
   }
 
 
@@ -173,6 +182,7 @@ namespace ssc
     microstructure = MicrostructureParameters();
     embedded       = EmbeddedParameters();
     newton         = NewtonParameters();
+    limits         = ResourceLimits();
     add_parameters(prm, names);
     if (!file.empty())
       parse_with_includes(prm, file, /*skip_undefined=*/false);
@@ -265,7 +275,16 @@ namespace ssc
             << mesh.patch_length_x << " x " << mesh.patch_length_y
             << " mm). Enlarge Mesh/Patch length x and y or shrink the punch.";
         AssertThrow(2 * punch.radius < smallest, ExcMessage(msg.str()));
+        const double stack = layers.depth_of_interface(layers.n_layers(), 0, 0);
+        std::ostringstream depth;
+        depth << "Punch/Depth = " << punch.depth
+              << " mm reaches through the whole layer stack (" << stack
+              << " mm at the patch centre): the punch must stay inside the "
+                 "body.";
+        AssertThrow(punch.control == PunchControl::force || punch.depth < stack,
+                    ExcMessage(depth.str()));
       }
+    check_model_size(*this);
   }
 
 

@@ -2,7 +2,8 @@
 // the box volume (relative 1e-10); every face between two seeds appears in
 // both cells with the same area; the box sides are covered exactly; and
 // degenerate seeds -- a cubic lattice (cospherical), coplanar seeds, seeds
-// on faces, edges and corners of the box -- give valid tessellations.
+// on faces, edges and corners of the box, a single seed in a thin or
+// needle-shaped box -- give valid tessellations.
 // Coinciding seeds are reported as an error.
 
 #include <cmath>
@@ -111,6 +112,25 @@ main(int argc, char **argv)
   check("seeds on faces, edges and corners", box, on_boundary);
 
   check("one seed", box, {Point<3>(0, 2, -1)});
+
+  // thin and needle-shaped boxes: the seeds and the images within the
+  // first reach are collinear or coplanar (a 1D or 2D Delaunay
+  // triangulation, which crashed before). Their extents are powers of two
+  // times each other: the dyadic frame represents them exactly (it
+  // rounds to 1e-12 of the largest extent, which a box 400 times thinner
+  // than wide would see as 4e-10 of its volume).
+  const BoundingBox<3> thin(
+    std::make_pair(Point<3>(-32, -32, 0), Point<3>(32, 32, 0.25)));
+  check("one seed in a thin box", thin, {Point<3>(1, -2, 0.125)});
+  check("two seeds in a thin box",
+        thin,
+        {Point<3>(-10, 3, 0.1), Point<3>(12, -5, 0.1)});
+  const BoundingBox<3> needle(
+    std::make_pair(Point<3>(0, 0, 0), Point<3>(0.03125, 0.03125, 32)));
+  check("one seed in a needle", needle, {Point<3>(0.01, 0.01, 7)});
+  check("collinear seeds in a needle",
+        needle,
+        {Point<3>(0.015, 0.015, 3), Point<3>(0.015, 0.015, 17)});
 
   try
     {

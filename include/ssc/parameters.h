@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <ssc/base/resource_limits.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/embedded_parameters.h>
 #include <ssc/mesh/layer_stack.h>
@@ -28,7 +29,18 @@ namespace ssc
   parse_with_includes(ParameterHandler  &prm,
                       const std::string &file,
                       const bool         skip_undefined,
-                      const unsigned int depth = 0);
+                      const unsigned int depth,
+                      unsigned int      &n_files);
+
+  /// The same from the top: @p file at depth 0, at most 1000 files in all.
+  inline void
+  parse_with_includes(ParameterHandler  &prm,
+                      const std::string &file,
+                      const bool         skip_undefined)
+  {
+    unsigned int n_files = 0;
+    parse_with_includes(prm, file, skip_undefined, 0, n_files);
+  }
 
   /**
    * All parameters of one run, read from a prm file plus command-line
@@ -71,6 +83,7 @@ namespace ssc
     MicrostructureParameters microstructure;
     EmbeddedParameters       embedded;
     NewtonParameters         newton;
+    ResourceLimits           limits;
 
   private:
     /// Declares every section, bound to the members, with one section per

@@ -16,7 +16,8 @@ namespace ssc
   ElasticSystem::ElasticSystem(const BackgroundMesh       &mesh,
                                const LayerStack           &layers,
                                const ElasticityParameters &parameters,
-                               TimerOutput                &timer)
+                               TimerOutput                &timer,
+                               ConditionalOStream         *progress)
     : parameters(parameters)
     , timer(timer)
     , layer_materials(layers)
@@ -27,7 +28,8 @@ namespace ssc
     , assembler(displacement, kernel)
     , linear_solver(parameters.linear_solver,
                     displacement,
-                    boundary_constraints)
+                    boundary_constraints,
+                    progress)
   {}
 
 

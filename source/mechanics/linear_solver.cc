@@ -1,9 +1,12 @@
+#include <deal.II/base/timer.h>
+
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <Epetra_MultiVector.h>
+#include <Epetra_Operator.h>
 #include <Teuchos_ParameterList.hpp>
 
 #include <iomanip>
@@ -14,12 +17,109 @@
 
 namespace ssc
 {
+  namespace
+  {
+    /**
+     * The AMG preconditioner as AztecOO sees it, counting its applications
+     * (one per Krylov iteration) and reporting every 100th once the solve
+     * has run for a few seconds: AztecOO itself has no iteration hook.
+     */
+    class MonitoredPreconditioner : public Epetra_Operator
+    {
+    public:
+      MonitoredPreconditioner(Epetra_Operator    &preconditioner,
+                              ConditionalOStream *progress,
+                              const std::string  &solver)
+        : preconditioner(preconditioner)
+        , progress(progress)
+        , solver(solver)
+      {}
+
+      int
+      ApplyInverse(const Epetra_MultiVector &x,
+                   Epetra_MultiVector       &y) const override
+      {
+        ++applications;
+        if (progress != nullptr && applications % 100 == 0 &&
+            timer.wall_time() > 5.)
+          *progress << "  " << solver << ": iteration " << applications
+                    << " after " << static_cast<int>(timer.wall_time()) << " s"
+                    << std::endl;
+        return preconditioner.ApplyInverse(x, y);
+      }
+
+      int
+      Apply(const Epetra_MultiVector &x, Epetra_MultiVector &y) const override
+      {
+        return preconditioner.Apply(x, y);
+      }
+
+      int
+      SetUseTranspose(bool use) override
+      {
+        return preconditioner.SetUseTranspose(use);
+      }
+
+      double
+      NormInf() const override
+      {
+        return preconditioner.NormInf();
+      }
+
+      const char *
+      Label() const override
+      {
+        return "ssc monitored AMG";
+      }
+
+      bool
+      UseTranspose() const override
+      {
+        return preconditioner.UseTranspose();
+      }
+
+      bool
+      HasNormInf() const override
+      {
+        return preconditioner.HasNormInf();
+      }
+
+      const Epetra_Comm &
+      Comm() const override
+      {
+        return preconditioner.Comm();
+      }
+
+      const Epetra_Map &
+      OperatorDomainMap() const override
+      {
+        return preconditioner.OperatorDomainMap();
+      }
+
+      const Epetra_Map &
+      OperatorRangeMap() const override
+      {
+        return preconditioner.OperatorRangeMap();
+      }
+
+    private:
+      Epetra_Operator      &preconditioner;
+      ConditionalOStream   *progress;
+      const std::string     solver;
+      Timer                 timer;
+      mutable unsigned long applications = 0;
+    };
+  } // namespace
+
+
   LinearSolver::LinearSolver(const LinearSolverParameters &parameters,
                              const DisplacementField      &field,
-                             const BoundaryConstraints    &constraints)
+                             const BoundaryConstraints    &constraints,
+                             ConditionalOStream           *progress)
     : parameters(parameters)
     , field(field)
     , constraints(constraints)
+    , progress(progress)
   {}
 
 
@@ -115,8 +215,10 @@ namespace ssc
       {
         try
           {
-            TrilinosWrappers::SolverCG cg(control);
-            cg.solve(matrix, x, rhs, preconditioner);
+            TrilinosWrappers::SolverCG    cg(control);
+            const MonitoredPreconditioner monitored(
+              preconditioner.trilinos_operator(), progress, "CG");
+            cg.solve(matrix.trilinos_matrix(), x, rhs, monitored);
           }
         catch (const SolverControl::NoConvergence &)
           {
@@ -131,7 +233,30 @@ namespace ssc
             TrilinosWrappers::SolverGMRES gmres(
               control,
               TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
-            gmres.solve(matrix, x, rhs, preconditioner);
+            try
+              {
+                const MonitoredPreconditioner monitored(
+                  preconditioner.trilinos_operator(), progress, "GMRES");
+                gmres.solve(matrix.trilinos_matrix(), x, rhs, monitored);
+              }
+            catch (const SolverControl::NoConvergence &)
+              {
+                throw;
+              }
+            catch (const ExceptionBase &e)
+              {
+                std::ostringstream info;
+                e.print_info(info);
+                AssertThrow(false,
+                            ExcMessage(
+                              "The linear solver broke down (" +
+                              Utilities::trim(info.str()) +
+                              "): the system is singular or too badly "
+                              "conditioned to solve. Check the moduli and "
+                              "thicknesses (Layer stack/<layer>/Young's "
+                              "modulus, Poisson's ratio, Thickness) and the "
+                              "supports (Elasticity/Sides)."));
+              }
           }
       }
     catch (const SolverControl::NoConvergence &e)

@@ -69,7 +69,7 @@ namespace ssc
 
 
   void
-  MicrostructureCoupling::setup()
+  MicrostructureCoupling::setup(ConditionalOStream *timed_progress)
   {
     if (!parameters.lobules && !parameters.ligaments)
       return;
@@ -80,8 +80,14 @@ namespace ssc
                                          mesh_parameters.patch_length_x,
                                          mesh_parameters.patch_length_y,
                                          parameters);
-      microstructure->build(
-        [this](const std::string &line) { pcout << line << std::endl; });
+      const auto print_on = [](ConditionalOStream *stream) {
+        return
+          [stream](const std::string &line) { *stream << line << std::endl; };
+      };
+      microstructure->build(print_on(&pcout),
+                            timed_progress != nullptr ?
+                              print_on(timed_progress) :
+                              std::function<void(const std::string &)>());
     }
 
     TimerOutput::Scope t(timer, "embedding");

@@ -5,16 +5,22 @@
 #include <deal.II/grid/tria.h>
 
 #include <cmath>
+#include <set>
+#include <sstream>
+#include <utility>
 
+#include <ssc/base/collective_error.h>
 #include <ssc/mesh/background_mesh.h>
 
 namespace ssc
 {
   BackgroundMesh::BackgroundMesh(const LayerStack     &layers,
                                  const MeshParameters &parameters,
-                                 const MPI_Comm        mpi_communicator)
+                                 const MPI_Comm        mpi_communicator,
+                                 const ResourceLimits &limits)
     : layers(layers)
     , parameters(parameters)
+    , limits(limits)
     , tria(mpi_communicator,
            Triangulation<3>::limit_level_difference_at_vertices)
   {}
@@ -56,9 +62,38 @@ namespace ssc
   }
 
 
+  double
+  BackgroundMesh::estimated_cells(const LayerStack     &layers,
+                                  const MeshParameters &parameters)
+  {
+    double across = 0;
+    for (unsigned int l = 0; l < layers.n_layers(); ++l)
+      across += layers.layer(l).n_cells_across;
+    const double lateral =
+      static_cast<double>(graded_steps(parameters.patch_length_x,
+                                       parameters.cell_size,
+                                       parameters.core_half_width,
+                                       parameters.grading_ratio)
+                            .size()) *
+      graded_steps(parameters.patch_length_y,
+                   parameters.cell_size,
+                   parameters.core_half_width,
+                   parameters.grading_ratio)
+        .size();
+    return lateral * across * std::pow(8., parameters.global_refinements);
+  }
+
+
   void
   BackgroundMesh::build()
   {
+    ResourceLimits::require(estimated_cells(layers, parameters),
+                            limits.max_cells,
+                            "The background mesh's cell count",
+                            "Max cells",
+                            "use a larger Mesh/Cell size or Grading ratio, "
+                            "fewer Mesh/Global refinements or fewer Layer "
+                            "stack/<layer>/Cells across");
     const unsigned int n_layers = layers.n_layers();
 
     // Vertical steps in the chart (each layer has unit height), listed from
@@ -107,13 +142,39 @@ namespace ssc
       [&layer_map](const Point<3> &p) { return layer_map.push_forward(p); },
       coarse);
     coarse.set_all_manifold_ids(0);
+    // the same on every rank: the coarse mesh is whole on each
+    for (const Point<3> &p : coarse.get_vertices())
+      layers.check_thickness_at(p[0], p[1]);
 
     tria.copy_triangulation(coarse);
     tria.set_manifold(0, layer_map);
     tria.refine_global(parameters.global_refinements);
     refine_region_of_interest();
+    check_thickness_at_vertices();
     if (parameters.fitted_circle_radius > 0)
       check_fitted_circle();
+  }
+
+
+  void
+  BackgroundMesh::check_thickness_at_vertices() const
+  {
+    run_collectively(
+      [this]() {
+        // the thickness depends on (x, y) only: each column of vertices
+        // once
+        std::set<std::pair<double, double>> columns;
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              for (const unsigned int v : cell->vertex_indices())
+                columns.emplace(cell->vertex(v)[0], cell->vertex(v)[1]);
+              columns.emplace(cell->center()[0], cell->center()[1]);
+            }
+        for (const auto &[x, y] : columns)
+          layers.check_thickness_at(x, y);
+      },
+      tria.get_communicator());
   }
 
 
@@ -132,12 +193,25 @@ namespace ssc
               ++found;
           }
     found = Utilities::MPI::sum(found, tria.get_communicator());
-    AssertThrow(found >= 8,
-                ExcMessage("Mesh/Fitted circle radius = " + std::to_string(a) +
-                           " mm does not lie on a mesh line of the refined "
-                           "mesh: choose Cell size, Core half width and the "
-                           "refinements so that a is a multiple of the core "
-                           "cell size on the refined mesh."));
+    if (found >= 8)
+      return;
+    // the core's cells are Core half width / ceil(Core half width / Cell
+    // size) wide, which may differ from Cell size
+    const double core = parameters.core_half_width;
+    const double h =
+      core / std::max(1., std::ceil(core / parameters.cell_size - 1e-10));
+    std::ostringstream message;
+    message << "Mesh/Fitted circle radius = " << a
+            << " mm does not lie on a mesh line of the refined mesh: the "
+               "core cells are "
+            << h << " mm wide (Core half width " << core << " mm in "
+            << std::round(core / h) << " cells of at most Cell size "
+            << parameters.cell_size << " mm), "
+            << h / std::pow(2., parameters.global_refinements)
+            << " mm after the global refinements; choose a radius that is a "
+               "multiple of that, or a Cell size and Core half width whose "
+               "mesh lines pass through it.";
+    AssertThrow(false, ExcMessage(message.str()));
   }
 
 
@@ -158,6 +232,19 @@ namespace ssc
               if (std::hypot(lateral, vertical) <= 0.5 * cell->diameter())
                 cell->set_refine_flag();
             }
+        // each refined cell becomes eight (the 2:1 balance adds a few more)
+        unsigned int flagged = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          flagged += cell->is_locally_owned() && cell->refine_flag_set();
+        ResourceLimits::require(
+          static_cast<double>(tria.n_global_active_cells()) +
+            7. * Utilities::MPI::sum(flagged, tria.get_communicator()),
+          limits.max_cells,
+          "The background mesh's cell count after local refinement " +
+            std::to_string(step + 1),
+          "Max cells",
+          "use fewer Mesh/Region of interest/Local refinements, a smaller "
+          "Width or Shrink factor");
         tria.execute_coarsening_and_refinement();
         width *= parameters.roi_shrink;
       }

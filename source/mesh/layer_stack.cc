@@ -1,9 +1,12 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
 
+#include <ssc/base/surface_expression.h>
 #include <ssc/mesh/layer_stack.h>
 
 namespace ssc
@@ -44,6 +47,8 @@ namespace ssc
   double
   Layer::thickness(const double x, const double y) const
   {
+    if (!std::isnan(constant_thickness))
+      return constant_thickness;
     return thickness_function->value(Point<2>(x, y));
   }
 
@@ -225,11 +230,13 @@ namespace ssc
           }
         std::ostringstream nu;
         nu << layer.poisson_ratio;
-        AssertThrow(layer.poisson_ratio > -1. && layer.poisson_ratio < 0.5,
+        AssertThrow(layer.poisson_ratio >= min_poisson_ratio &&
+                      layer.poisson_ratio < 0.5,
                     ExcMessage(path + "Poisson's ratio = " + nu.str() +
-                               " is outside (-1, 0.5): nu = 0.5 is exactly "
-                               "incompressible and not supported; use "
-                               "0.4999."));
+                               " is outside [-0.9, 0.5): nu = 0.5 is exactly "
+                               "incompressible and not supported (use "
+                               "0.4999); below -0.9 the bulk modulus "
+                               "vanishes against the shear modulus."));
         AssertThrow(layer.given_youngs_modulus > 0.,
                     ExcMessage(path +
                                "Young's modulus must be positive (MPa)."));
@@ -238,6 +245,24 @@ namespace ssc
           (layer.kind == LayerKind::skin ? skin_modulus_factor : 1.);
         initialise_thickness(layer);
       }
+    // a contrast beyond this leaves the stiff layers rigid to round-off
+    // and the linear solver without a usable residual
+    const auto [softest, stiffest] =
+      std::minmax_element(layers.begin(),
+                          layers.end(),
+                          [](const Layer &a, const Layer &b) {
+                            return a.youngs_modulus < b.youngs_modulus;
+                          });
+    std::ostringstream contrast;
+    contrast << "Layer stack: Young's modulus of '" << stiffest->name << "' ("
+             << stiffest->youngs_modulus << " MPa) is more than "
+             << max_modulus_contrast << " times that of '" << softest->name
+             << "' (" << softest->youngs_modulus
+             << " MPa): the stiffer layer would be rigid to round-off; "
+                "model it as a support or bring the moduli closer.";
+    AssertThrow(stiffest->youngs_modulus <=
+                  max_modulus_contrast * softest->youngs_modulus,
+                ExcMessage(contrast.str()));
   }
 
 
@@ -287,23 +312,31 @@ namespace ssc
   void
   LayerStack::initialise_thickness(Layer &layer)
   {
-    layer.thickness_function = std::make_shared<FunctionParser<2>>(1);
-    try
-      {
-        layer.thickness_function->initialize("x,y",
-                                             layer.thickness_expression,
-                                             {});
-        // Evaluate once: muParser reports unknown symbols only on use.
-        layer.thickness_function->value(Point<2>());
-      }
-    catch (...)
-      {
-        AssertThrow(false,
-                    ExcMessage("Layer stack/" + layer.name + "/Thickness = '" +
-                               layer.thickness_expression +
-                               "' is not a number or a valid muParser "
-                               "expression of x and y."));
-      }
+    layer.thickness_function =
+      parse_surface_expression(layer.thickness_expression,
+                               "Layer stack/" + layer.name + "/Thickness");
+    layer.constant_thickness =
+      layer.has_constant_thickness() ?
+        layer.thickness_function->value(Point<2>()) :
+        std::numeric_limits<double>::quiet_NaN();
+  }
+
+
+  void
+  LayerStack::check_thickness(const Layer &layer,
+                              const double x,
+                              const double y)
+  {
+    const double t = layer.thickness(x, y);
+    if (t >= min_thickness && t <= max_thickness)
+      return;
+    std::ostringstream msg;
+    msg << "Layer stack/" << layer.name << "/Thickness = '"
+        << layer.thickness_expression << "' is " << t << " mm at (x, y) = ("
+        << x << ", " << y << "): every layer needs a finite thickness between "
+        << min_thickness << " and " << max_thickness
+        << " mm over the whole patch.";
+    AssertThrow(false, ExcMessage(msg.str()));
   }
 
 
@@ -314,21 +347,15 @@ namespace ssc
     for (const auto &layer : layers)
       for (unsigned int i = 0; i <= n; ++i)
         for (unsigned int j = 0; j <= n; ++j)
-          {
-            const double x = -Lx / 2 + Lx * i / n;
-            const double y = -Ly / 2 + Ly * j / n;
-            const double t = layer.thickness(x, y);
-            if (!(t > 0.))
-              {
-                std::ostringstream msg;
-                msg << "Layer stack/" << layer.name << "/Thickness = '"
-                    << layer.thickness_expression << "' is " << t
-                    << " mm at (x, y) = (" << x << ", " << y
-                    << "): every layer needs a positive thickness over the "
-                       "whole patch.";
-                AssertThrow(false, ExcMessage(msg.str()));
-              }
-          }
+          check_thickness(layer, -Lx / 2 + Lx * i / n, -Ly / 2 + Ly * j / n);
+  }
+
+
+  void
+  LayerStack::check_thickness_at(const double x, const double y) const
+  {
+    for (const auto &layer : layers)
+      check_thickness(layer, x, y);
   }
 
 

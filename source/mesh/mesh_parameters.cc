@@ -89,14 +89,6 @@ namespace ssc
                   cell_size <= std::max(patch_length_x, patch_length_y),
                 ExcMessage("Mesh/Cell size must be positive and not larger "
                            "than the patch."));
-    const double n_cells_estimate = std::ceil(patch_length_x / cell_size) *
-                                    std::ceil(patch_length_y / cell_size) *
-                                    std::pow(8., global_refinements);
-    AssertThrow(n_cells_estimate < 5e7,
-                ExcMessage("Mesh/Cell size and Global refinements ask for "
-                           "more than 5e7 cells in one layer; this machine "
-                           "cannot hold that. Use a larger cell size, fewer "
-                           "refinements or grading."));
     AssertThrow(4 * fitted_circle_radius <
                   std::min(patch_length_x, patch_length_y),
                 ExcMessage("Mesh/Fitted circle radius: the fitted circle "

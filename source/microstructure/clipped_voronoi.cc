@@ -205,6 +205,18 @@ namespace ssc
                                   n + side * n + i);
             }
         const Delaunay delaunay(points.begin(), points.end());
+        // Few seeds in a thin or needle-shaped box: the seeds and the
+        // images within reach may be coplanar or collinear, and the
+        // triangulation then has no cells to dualise. Mirroring across
+        // every side spans all three directions.
+        if (delaunay.dimension() < 3)
+          {
+            AssertThrow(!mirror_all,
+                        ExcMessage("Internal error: the mirrored Voronoi "
+                                   "seeds span fewer than three dimensions."));
+            reach = 2. * largest_extent;
+            continue;
+          }
 
         std::vector<Delaunay::Vertex_handle> seed_vertex(n);
         for (auto v = delaunay.finite_vertices_begin();
@@ -387,9 +399,10 @@ namespace ssc
 
 
   std::vector<double>
-  lloyd_relaxation(const BoundingBox<3>  &box,
-                   std::vector<Point<3>> &seeds,
-                   const unsigned int     n_iterations)
+  lloyd_relaxation(const BoundingBox<3>                    &box,
+                   std::vector<Point<3>>                   &seeds,
+                   const unsigned int                       n_iterations,
+                   const std::function<void(unsigned int)> &after_iteration)
   {
     std::vector<double> energies;
     for (unsigned int iteration = 0;; ++iteration)
@@ -405,6 +418,8 @@ namespace ssc
           break;
         for (unsigned int i = 0; i < seeds.size(); ++i)
           seeds[i] = cells[i].centroid;
+        if (after_iteration)
+          after_iteration(iteration + 1);
       }
     return energies;
   }

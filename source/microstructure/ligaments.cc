@@ -7,6 +7,7 @@
 #include <random>
 #include <sstream>
 
+#include <ssc/base/surface_expression.h>
 #include <ssc/microstructure/ligaments.h>
 
 namespace ssc
@@ -47,29 +48,11 @@ namespace ssc
   } // namespace
 
 
-  std::vector<Ligament>
-  place_ligaments(const LayerStack               &layers,
-                  const BoundingBox<2>           &rectangle,
-                  const MicrostructureParameters &parameters)
+  LigamentDensity::LigamentDensity(const BoundingBox<2>           &rectangle,
+                                   const MicrostructureParameters &parameters)
+    : density(parse_surface_expression(parameters.ligament_density,
+                                       "Microstructure/Ligaments/Density"))
   {
-    const auto [top, bottom] =
-      ligament_interfaces(layers, parameters.ligament_target);
-
-    FunctionParser<2> density(1);
-    try
-      {
-        density.initialize("x,y", parameters.ligament_density, {});
-        density.value(Point<2>());
-      }
-    catch (...)
-      {
-        AssertThrow(false,
-                    ExcMessage("Microstructure/Ligaments/Density = '" +
-                               parameters.ligament_density +
-                               "' is not a number or a valid muParser "
-                               "expression of x and y."));
-      }
-
     // Expected count (per cm^2 = per 100 mm^2) and the density's maximum,
     // by Gauss quadrature over the region's rectangle.
     const Point<2>    &lo = rectangle.get_boundary_points().first;
@@ -77,7 +60,6 @@ namespace ssc
     const unsigned int n  = 32;
     const QGauss<2>    gauss(3);
     const double       hx = (hi[0] - lo[0]) / n, hy = (hi[1] - lo[1]) / n;
-    double             expected = 0, maximum = 0;
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
         for (unsigned int q = 0; q <= gauss.size(); ++q)
@@ -87,33 +69,43 @@ namespace ssc
               q < gauss.size() ? gauss.point(q) : Point<2>();
             const Point<2> p(lo[0] + (i + local[0]) * hx,
                              lo[1] + (j + local[1]) * hy);
-            const double   rho = density.value(p);
-            if (!(rho >= 0))
+            const double   rho = density->value(p);
+            if (!(rho >= 0 && std::isfinite(rho)))
               {
                 std::ostringstream message;
                 message << "Microstructure/Ligaments/Density = '"
                         << parameters.ligament_density << "' is " << rho
                         << " per cm^2 at (x, y) = (" << p[0] << ", " << p[1]
-                        << "): it must be non-negative.";
+                        << "): it must be finite and non-negative.";
                 AssertThrow(false, ExcMessage(message.str()));
               }
             maximum = std::max(maximum, rho);
             if (q < gauss.size() && parameters.region.contains(p[0], p[1]))
               expected += gauss.weight(q) * hx * hy * rho / 100.;
           }
-    const unsigned int    count = std::round(expected);
+  }
+
+
+  std::vector<Ligament>
+  place_ligaments(const LayerStack               &layers,
+                  const BoundingBox<2>           &rectangle,
+                  const MicrostructureParameters &parameters)
+  {
+    const auto [top, bottom] =
+      ligament_interfaces(layers, parameters.ligament_target);
+    const LigamentDensity density(rectangle, parameters);
+    const unsigned int    count = std::round(density.expected);
     std::vector<Ligament> ligaments;
     if (count == 0)
       return ligaments;
-    AssertThrow(count < 1e6,
-                ExcMessage("Microstructure/Ligaments/Density asks for more "
-                           "than 1e6 ligaments."));
+    const Point<2> &lo = rectangle.get_boundary_points().first;
+    const Point<2> &hi = rectangle.get_boundary_points().second;
 
     std::seed_seq seed_sequence{parameters.seed, 1000003u};
     std::mt19937  generator(seed_sequence);
     std::uniform_real_distribution<double> uniform(0., 1.);
     // the density may exceed the sampled maximum between sample points
-    const double  bound    = 1.05 * maximum;
+    const double  bound    = 1.05 * density.maximum;
     unsigned long attempts = 0;
     while (ligaments.size() < count)
       {
@@ -125,7 +117,7 @@ namespace ssc
         const double y = lo[1] + uniform(generator) * (hi[1] - lo[1]);
         const double u = uniform(generator);
         if (!parameters.region.contains(x, y) ||
-            u * bound > density.value(Point<2>(x, y)))
+            u * bound > density.density->value(Point<2>(x, y)))
           continue;
         ligaments.push_back(
           {Point<3>(x, y, -layers.depth_of_interface(top, x, y)),

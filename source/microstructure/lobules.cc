@@ -171,12 +171,14 @@ namespace ssc
 
 
   LayerLobules
-  build_layer_lobules(const LayerStack               &layers,
-                      const unsigned int              layer,
-                      const BoundingBox<2>           &rectangle,
-                      const MicrostructureParameters &parameters,
-                      const unsigned int              first_id,
-                      const std::function<void(const std::string &)> &progress)
+  build_layer_lobules(
+    const LayerStack                               &layers,
+    const unsigned int                              layer,
+    const BoundingBox<2>                           &rectangle,
+    const MicrostructureParameters                 &parameters,
+    const unsigned int                              first_id,
+    const std::function<void(const std::string &)> &progress,
+    const std::function<void(const std::string &)> &timed_progress)
   {
     Timer        timer;
     const Layer &data = layers.layer(layer);
@@ -221,8 +223,15 @@ namespace ssc
              << " Lloyd iterations";
         progress(line.str());
       }
-    result.cvt_energy =
-      lloyd_relaxation(box, seeds, parameters.lloyd_iterations);
+    // a long relaxation reports every iteration once it has run a while
+    result.cvt_energy = lloyd_relaxation(
+      box, seeds, parameters.lloyd_iterations, [&](const unsigned int done) {
+        if (timed_progress && timer.wall_time() > 5.)
+          timed_progress(
+            "  Lloyd iteration " + std::to_string(done) + " of " +
+            std::to_string(parameters.lloyd_iterations) + " after " +
+            std::to_string(static_cast<int>(timer.wall_time())) + " s");
+      });
     const std::vector<VoronoiCell> cells =
       compute_clipped_voronoi(box, seeds, true, result.diagnostics);
 

@@ -29,7 +29,8 @@ namespace ssc
 
   void
   Microstructure::build(
-    const std::function<void(const std::string &)> &progress)
+    const std::function<void(const std::string &)> &progress,
+    const std::function<void(const std::string &)> &timed_progress)
   {
     layer_lobules.clear();
     all_septa.clear();
@@ -41,8 +42,13 @@ namespace ssc
           if (layers.layer(l).is_adipose() &&
               layers.layer(l).lobule_diameter > 0)
             {
-              layer_lobules.push_back(build_layer_lobules(
-                layers, l, rectangle, parameters, next_id, progress));
+              layer_lobules.push_back(build_layer_lobules(layers,
+                                                          l,
+                                                          rectangle,
+                                                          parameters,
+                                                          next_id,
+                                                          progress,
+                                                          timed_progress));
               next_id += layer_lobules.back().lobules.size();
               for (const auto &septum : layer_lobules.back().septa)
                 all_septa.push_back(septum);

@@ -38,21 +38,51 @@ namespace ssc
 
   template <int dim>
   void
-  EmbeddedFieldWriter<dim>::write(const std::string            &file,
+  EmbeddedFieldWriter<dim>::write(const RunOutput              &output,
+                                  const std::string            &file,
                                   const DisplacementField      &field,
                                   const std::vector<CellField> &fields) const
   {
     std::vector<Tensor<1, 3>> u;
     std::vector<Tensor<2, 3>> gradient;
     field.evaluate_at(locations, u, gradient);
-    if (Utilities::MPI::this_mpi_process(communicator) != 0)
-      return;
+    std::vector<DataOutBase::Patch<dim, 3>> patches;
+    std::vector<std::string>                names;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      fill_patches(u, gradient, fields, patches, names);
+    output.write_file(file, [&](std::ostream &out) {
+      const std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+                            vectors = {{0,
+                                        2,
+                                        "displacement",
+                                        DataComponentInterpretation::component_is_part_of_vector}};
+      DataOutBase::VtkFlags flags;
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
+      if (patches.empty())
+        write_empty_vtu(out);
+      else
+        DataOutBase::write_vtu(patches, names, vectors, flags, out);
+    });
+  }
 
+
+  template <int dim>
+  void
+  EmbeddedFieldWriter<dim>::fill_patches(
+    const std::vector<Tensor<1, 3>>         &u,
+    const std::vector<Tensor<2, 3>>         &gradient,
+    const std::vector<CellField>            &fields,
+    std::vector<DataOutBase::Patch<dim, 3>> &patches,
+    std::vector<std::string>                &names) const
+  {
     const ReferenceCell reference_cell =
       dim == 1 ? ReferenceCells::Line : ReferenceCells::Triangle;
-    const unsigned int                      n_vertices = dim + 1;
-    std::vector<DataOutBase::Patch<dim, 3>> patches;
-    unsigned int                            vertex = 0, c = 0;
+    const unsigned int n_vertices = dim + 1;
+    unsigned int       vertex = 0, c = 0;
     const unsigned int first_centre = mesh.n_active_cells() * n_vertices;
     for (const auto &cell : mesh.active_cell_iterators())
       {
@@ -79,27 +109,9 @@ namespace ssc
         patches.push_back(patch);
       }
 
-    std::vector<std::string> names = {"displacement",
-                                      "displacement",
-                                      "displacement"};
+    names = {"displacement", "displacement", "displacement"};
     for (const auto &field : fields)
       names.push_back(field.first);
-    std::vector<
-      std::tuple<unsigned int,
-                 unsigned int,
-                 std::string,
-                 DataComponentInterpretation::DataComponentInterpretation>>
-                          vectors = {{0,
-                                      2,
-                                      "displacement",
-                                      DataComponentInterpretation::component_is_part_of_vector}};
-    DataOutBase::VtkFlags flags;
-    flags.compression_level = DataOutBase::VtkFlags::best_speed;
-    std::ofstream out(file);
-    if (patches.empty())
-      write_empty_vtu(out);
-    else
-      DataOutBase::write_vtu(patches, names, vectors, flags, out);
   }
 
 

@@ -2,10 +2,15 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.templates.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <set>
+#include <sstream>
 
+#include <ssc/base/collective_error.h>
 #include <ssc/output/run_output.h>
 
 namespace ssc
@@ -53,24 +58,19 @@ namespace ssc
   {
     // Rank 0 creates the folder; the outcome is shared so that every rank
     // fails together instead of waiting for a rank that gave up.
-    std::string problem;
-    if (is_root)
-      {
-        std::error_code error;
-        std::filesystem::create_directories(folder, error);
-        if (error)
-          problem = "Cannot create the output folder '" + folder +
-                    "': " + error.message();
-        else
-          {
-            std::filesystem::remove(path("summary.json"), error);
-            log_file.open(path("log.txt"));
-            if (!log_file)
-              problem = "Cannot write into the output folder '" + folder + "'.";
-          }
-      }
-    problem = Utilities::MPI::broadcast(mpi_communicator, problem, 0);
-    AssertThrow(problem.empty(), ExcMessage(problem));
+    on_root([&]() {
+      std::error_code error;
+      std::filesystem::create_directories(folder, error);
+      AssertThrow(!error,
+                  ExcMessage("Cannot create the output folder '" + folder +
+                             "': " + error.message() +
+                             " (Run/Output directory, Run/Name)."));
+      n_removed = remove_stale_results();
+      log_file.open(path("log.txt"));
+      AssertThrow(log_file,
+                  ExcMessage("Cannot write into the output folder '" + folder +
+                             "' (Run/Output directory, Run/Name)."));
+    });
     tee_buffer =
       std::make_unique<TeeBuffer>(print_to_stdout ? std::cout.rdbuf() : nullptr,
                                   is_root ? log_file.rdbuf() : nullptr);
@@ -86,6 +86,110 @@ namespace ssc
   }
 
 
+  unsigned int
+  RunOutput::remove_stale_results() const
+  {
+    // what a run writes: its tables, fields, records, summary, log and the
+    // pictures the scripts draw, and temporaries of an interrupted run
+    const std::set<std::string> extensions = {
+      ".vtu", ".pvtu", ".pvd", ".csv", ".json", ".png", ".tmp"};
+    const std::set<std::string> names = {"parameters.prm", "log.txt"};
+    unsigned int                n     = 0;
+    for (const auto &entry : std::filesystem::directory_iterator(folder))
+      {
+        const std::filesystem::path &file = entry.path();
+        if (entry.is_regular_file() &&
+            (extensions.count(file.extension().string()) > 0 ||
+             names.count(file.filename().string()) > 0))
+          {
+            std::error_code error;
+            std::filesystem::remove(file, error);
+            AssertThrow(!error,
+                        ExcMessage("Cannot remove '" + file.string() +
+                                   "', a result of an earlier run in the "
+                                   "output folder: " +
+                                   error.message()));
+            ++n;
+          }
+      }
+    return n;
+  }
+
+
+  void
+  RunOutput::on_root(const std::function<void()> &work) const
+  {
+    std::string problem;
+    if (is_root)
+      try
+        {
+          work();
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          problem = Utilities::trim(info.str());
+          if (problem.empty())
+            problem = e.what();
+        }
+      catch (const std::exception &e)
+        {
+          problem = e.what();
+        }
+    problem = Utilities::MPI::broadcast(mpi_communicator, problem, 0);
+    AssertThrow(problem.empty(), ExcMessage(problem));
+  }
+
+
+  void
+  RunOutput::write_atomically(const std::string                         &path,
+                              const std::function<void(std::ostream &)> &write)
+  {
+    const std::string temporary = path + ".tmp";
+    std::string       problem;
+    {
+      std::ofstream out(temporary, std::ios::binary);
+      if (!out)
+        problem = std::strerror(errno);
+      else
+        {
+          try
+            {
+              write(out);
+              out.flush();
+            }
+          catch (...)
+            {
+              // deal.II's writers throw ExcIO when the stream fails
+              out.setstate(std::ios::badbit);
+            }
+          if (!out)
+            problem = std::strerror(errno);
+          out.close();
+          if (problem.empty() && out.fail())
+            problem = std::strerror(errno);
+        }
+    }
+    std::error_code error;
+    if (problem.empty())
+      {
+        std::filesystem::rename(temporary, path, error);
+        if (error)
+          problem = error.message();
+      }
+    if (!problem.empty())
+      {
+        std::filesystem::remove(temporary, error);
+        AssertThrow(false,
+                    ExcMessage("Cannot write '" + path + "': " + problem +
+                               " (a full disk or a folder without write "
+                               "permission? Run/Output directory chooses "
+                               "where results go)."));
+      }
+  }
+
+
   std::string
   RunOutput::path(const std::string &file_name) const
   {
@@ -97,11 +201,48 @@ namespace ssc
   RunOutput::write_text(const std::string &file_name,
                         const std::string &content) const
   {
-    if (!is_root)
-      return;
-    std::ofstream out(path(file_name));
-    AssertThrow(out, ExcMessage("Cannot write " + path(file_name)));
-    out << content;
+    write_file(file_name, [&content](std::ostream &out) { out << content; });
+  }
+
+
+  void
+  RunOutput::write_file(const std::string                         &file_name,
+                        const std::function<void(std::ostream &)> &write) const
+  {
+    on_root([&]() { write_atomically(path(file_name), write); });
+  }
+
+
+  template <int dim>
+  std::string
+  RunOutput::write_vtu(const DataOutInterface<dim, 3> &data_out,
+                       const std::string              &basename,
+                       const unsigned int              step) const
+  {
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const std::string stem = basename + "_" + Utilities::int_to_string(step, 4);
+    const auto        piece = [&](const unsigned int rank) {
+      return stem + "." +
+             Utilities::int_to_string(rank, Utilities::needed_digits(n_ranks)) +
+             ".vtu";
+    };
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
+    run_collectively(
+      [&]() {
+        write_atomically(path(piece(rank)),
+                         [&](std::ostream &out) { data_out.write_vtu(out); });
+      },
+      mpi_communicator);
+    const std::string record = stem + ".pvtu";
+    write_file(record, [&](std::ostream &out) {
+      std::vector<std::string> pieces;
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        pieces.push_back(piece(r));
+      data_out.write_pvtu_record(out, pieces);
+    });
+    return record;
   }
 
 
@@ -111,24 +252,30 @@ namespace ssc
                             const std::string &vtu_file)
   {
     pvd_records[family].emplace_back(time, vtu_file);
-    if (!is_root)
-      return;
-    std::ofstream out(path(family + ".pvd"));
-    DataOutBase::write_pvd_record(out, pvd_records[family]);
+    write_file(family + ".pvd", [&](std::ostream &out) {
+      DataOutBase::write_pvd_record(out, pvd_records[family]);
+    });
   }
 
 
   void
   RunOutput::write_summary(const nlohmann::ordered_json &summary) const
   {
-    if (!is_root)
-      return;
-    const std::string temporary = path("summary.json.tmp");
-    {
-      std::ofstream out(temporary);
-      AssertThrow(out, ExcMessage("Cannot write " + temporary));
-      out << summary.dump(2) << '\n';
-    }
-    std::filesystem::rename(temporary, path("summary.json"));
+    write_file("summary.json",
+               [&](std::ostream &out) { out << summary.dump(2) << '\n'; });
   }
+
+
+  template std::string
+  RunOutput::write_vtu(const DataOutInterface<1, 3> &,
+                       const std::string &,
+                       const unsigned int) const;
+  template std::string
+  RunOutput::write_vtu(const DataOutInterface<2, 3> &,
+                       const std::string &,
+                       const unsigned int) const;
+  template std::string
+  RunOutput::write_vtu(const DataOutInterface<3, 3> &,
+                       const std::string &,
+                       const unsigned int) const;
 } // namespace ssc

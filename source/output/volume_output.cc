@@ -62,8 +62,7 @@ namespace ssc
   write_volume_vtu(const DisplacementField &field,
                    const LayerMaterials    &materials,
                    const GrowthField       &growth,
-                   const std::string       &directory,
-                   const std::string       &basename,
+                   const RunOutput         &output,
                    const unsigned int       step)
   {
     const auto                              &tria    = field.triangulation();
@@ -110,7 +109,6 @@ namespace ssc
     DataOutBase::VtkFlags flags;
     flags.compression_level = DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    return data_out.write_vtu_with_pvtu_record(
-      directory + "/", basename, step, tria.get_communicator(), 4, 0);
+    return output.write_vtu(data_out, "volume", step);
   }
 } // namespace ssc

@@ -17,7 +17,7 @@ namespace ssc
   {
     /// The background mesh with its layer index per cell (VTU + PVTU).
     std::string
-    write_layer_ids(const BackgroundMesh &mesh, const std::string &directory)
+    write_layer_ids(const BackgroundMesh &mesh, const RunOutput &output)
     {
       const auto   &tria = mesh.triangulation();
       Vector<float> layer(tria.n_active_cells());
@@ -28,8 +28,7 @@ namespace ssc
       data_out.attach_triangulation(tria);
       data_out.add_data_vector(layer, "layer", DataOut<3>::type_cell_data);
       data_out.build_patches();
-      return data_out.write_vtu_with_pvtu_record(
-        directory + "/", "volume", 0, tria.get_communicator(), 4, 0);
+      return output.write_vtu(data_out, "volume", 0);
     }
   } // namespace
 
@@ -79,16 +78,13 @@ namespace ssc
       std::ostringstream csv;
       microstructure.write_lobules_csv(csv);
       output.write_text("lobules.csv", csv.str());
-      if (root)
-        {
-          std::ofstream septa(output.path("septa.vtu"));
-          microstructure.write_septa_vtu(septa);
-          std::ofstream ligaments(output.path("ligaments.vtu"));
-          microstructure.write_ligaments_vtu(ligaments);
-        }
-      output.add_pvd_record("volume",
-                            0,
-                            write_layer_ids(mesh, output.directory()));
+      output.write_file("septa.vtu", [&](std::ostream &out) {
+        microstructure.write_septa_vtu(out);
+      });
+      output.write_file("ligaments.vtu", [&](std::ostream &out) {
+        microstructure.write_ligaments_vtu(out);
+      });
+      output.add_pvd_record("volume", 0, write_layer_ids(mesh, output));
     }
 
     nlohmann::ordered_json summary =

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include <ssc/embedding/point_locator.h>
-#include <ssc/output/microstructure_output.h>
+#include <ssc/output/field_output.h>
 #include <ssc/output/run_output.h>
 #include <ssc/output/volume_output.h>
 #include <ssc/scenes/growth_region.h>
@@ -104,9 +104,10 @@ namespace ssc
     const auto surface = locator.locate(surface_points);
 
     QuasiStaticDriver driver(system, parameters.newton, pcout, !run.test_mode);
-    const MicrostructureOutput microstructure_output(
-      coupling,
-      driver.linear() ? Kinematics::small_strain : Kinematics::finite_strain);
+    const FieldOutput field_output(system,
+                                   coupling,
+                                   driver.linear() ? Kinematics::small_strain :
+                                                     Kinematics::finite_strain);
     std::vector<double> fractions;
     for (unsigned int step = 1; step <= growth.load_steps; ++step)
       fractions.push_back(double(step) / growth.load_steps);
@@ -149,14 +150,7 @@ namespace ssc
       if (run.write_fields)
         {
           TimerOutput::Scope t(timer, "output");
-          const std::string  file = write_volume_vtu(system.field(),
-                                                    system.materials(),
-                                                    system.growth(),
-                                                    output.directory(),
-                                                    "volume",
-                                                    k + 1);
-          output.add_pvd_record("volume", fraction, file);
-          microstructure_output.write(system.field(), output, k + 1, fraction);
+          field_output.write(output, k + 1, fraction);
         }
     };
     driver.run(

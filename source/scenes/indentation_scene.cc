@@ -3,7 +3,7 @@
 #include <cmath>
 #include <iomanip>
 
-#include <ssc/output/microstructure_output.h>
+#include <ssc/output/field_output.h>
 #include <ssc/output/run_output.h>
 #include <ssc/output/volume_output.h>
 #include <ssc/scenes/indentation_output.h>
@@ -45,9 +45,10 @@ namespace ssc
     RunOutput             &output = scene.output();
     PunchLoading           loading(parameters, system, timer, pcout);
     QuasiStaticDriver driver(system, parameters.newton, pcout, !run.test_mode);
-    const MicrostructureOutput microstructure_output(
-      model.coupling(),
-      driver.linear() ? Kinematics::small_strain : Kinematics::finite_strain);
+    const FieldOutput field_output(system,
+                                   model.coupling(),
+                                   driver.linear() ? Kinematics::small_strain :
+                                                     Kinematics::finite_strain);
 
     const PointLocator locator(model.mesh().triangulation(),
                                system.field().mapping());
@@ -102,14 +103,7 @@ namespace ssc
       if (run.write_fields)
         {
           TimerOutput::Scope t(timer, "output");
-          const std::string  file = write_volume_vtu(system.field(),
-                                                    system.materials(),
-                                                    system.growth(),
-                                                    output.directory(),
-                                                    "volume",
-                                                    step + 1);
-          output.add_pvd_record("volume", force, file);
-          microstructure_output.write(system.field(), output, step + 1, force);
+          field_output.write(output, step + 1, force);
         }
       const StepStatistics &statistics = driver.statistics().back();
       pcout << "Load step " << step + 1 << " of " << loads.size() << ": force "

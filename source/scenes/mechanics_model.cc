@@ -1,3 +1,4 @@
+#include <ssc/model_size.h>
 #include <ssc/scenes/mechanics_model.h>
 
 namespace ssc
@@ -8,7 +9,8 @@ namespace ssc
     ConditionalOStream &pcout = scene.pcout();
     background_mesh = std::make_unique<BackgroundMesh>(parameters.layers,
                                                        parameters.mesh,
-                                                       scene.communicator());
+                                                       scene.communicator(),
+                                                       parameters.limits);
     {
       TimerOutput::Scope t(timer, "mesh");
       background_mesh->build();
@@ -21,11 +23,25 @@ namespace ssc
     elastic_system = std::make_unique<ElasticSystem>(*background_mesh,
                                                      parameters.layers,
                                                      parameters.elasticity,
-                                                     timer);
+                                                     timer,
+                                                     &scene.timed_pcout());
     {
       TimerOutput::Scope t(timer, "setup");
       elastic_system->field().distribute_dofs();
     }
+    // local refinement is known only now: check the real DoF count before
+    // the matrix and the preconditioner are built
+    const double dofs = elastic_system->field().dof_handler().n_dofs();
+    ResourceLimits::require(dofs,
+                            parameters.limits.max_dofs,
+                            "The number of DoFs",
+                            "Max DoFs",
+                            "use a coarser mesh (Mesh/Cell size, refinements, "
+                            "Layer stack/<layer>/Cells across)");
+    parameters.limits.require_memory(
+      dofs * bytes_per_dof(parameters.elasticity.degree),
+      "The linear system (" + std::to_string(static_cast<long>(dofs)) +
+        " DoFs)");
     pcout << "Degrees of freedom: "
           << elastic_system->field().dof_handler().n_dofs() << " (Q"
           << parameters.elasticity.degree << ", "
@@ -40,6 +56,6 @@ namespace ssc
                                                *elastic_system,
                                                timer,
                                                pcout);
-    microstructure_coupling->setup();
+    microstructure_coupling->setup(&scene.timed_pcout());
   }
 } // namespace ssc

@@ -1,6 +1,7 @@
 #include <deal.II/base/function.h>
 
 #include <cmath>
+#include <sstream>
 
 #include <ssc/scenes/punch_loading.h>
 #include <ssc/scenes/support_conditions.h>
@@ -20,6 +21,27 @@ namespace ssc
     const auto             on_punch = [a](const Point<3> &p) {
       return std::hypot(p[0], p[1]) <= a * (1. + 1e-10);
     };
+    // a punch between the surface nodes would hold nothing and report a
+    // zero force
+    unsigned int n_under = 0;
+    for (const auto &cell :
+         system.field().dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == BoundaryId::top)
+            for (const unsigned int v : face->vertex_indices())
+              n_under += on_punch(face->vertex(v));
+    if (Utilities::MPI::sum(
+          n_under, system.field().triangulation().get_communicator()) == 0)
+      {
+        std::ostringstream message;
+        message << "Punch/Radius = " << a
+                << " mm: no mesh node of the skin surface lies under the "
+                   "punch, so it would press on nothing. Refine the mesh "
+                   "there (Mesh/Cell size, Mesh/Region of interest) or "
+                   "enlarge the punch.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
     std::vector<DirichletCondition> conditions =
       support_conditions(parameters.elasticity.sides);
     std::vector<TiedCondition> ties;

@@ -53,6 +53,13 @@ namespace ssc
                 ExcMessage("Run/Name = '" + name +
                            "' must be a plain folder name (not empty, no "
                            "'/', no surrounding spaces)."));
+    // the name goes into summary.json (UTF-8) and into a path
+    for (const char c : name)
+      AssertThrow(c >= 0x20 && c < 0x7f,
+                  ExcMessage("Run/Name must consist of printable ASCII "
+                             "characters (letters, digits, '_', '-', '.'): "
+                             "it names the run's folder and goes into "
+                             "summary.json."));
     AssertThrow(!Utilities::trim(output_directory).empty(),
                 ExcMessage("Run/Output directory must not be empty."));
   }

@@ -41,6 +41,9 @@ namespace ssc
     , run_output(parameters.run.output_directory + "/" + parameters.run.name,
                  mpi_communicator,
                  true)
+    , timed_progress(run_output.progress().get_stream(),
+                     run_output.progress().is_active() &&
+                       !parameters.run.test_mode)
     // each rank times its own phases (MPI_COMM_SELF): a TimerOutput on the
     // scene's communicator would synchronise every section and, destroyed
     // while an error propagates, print a banner about the skipped
@@ -62,6 +65,10 @@ namespace ssc
     pcout() << "ssc " << scene_name << " scene '" << parameters.run.name
             << "' on " << Utilities::MPI::n_mpi_processes(mpi_communicator)
             << " MPI rank(s)" << std::endl;
+    if (run_output.n_removed_files() > 0 && !parameters.run.test_mode)
+      pcout() << "Removed " << run_output.n_removed_files()
+              << " result files of an earlier run from "
+              << run_output.directory() << "/" << std::endl;
   }
 
 

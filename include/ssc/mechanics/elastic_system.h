@@ -43,10 +43,13 @@ namespace ssc
   class ElasticSystem
   {
   public:
+    /// The system of @p layers on @p mesh; long linear solves report
+    /// their progress on @p progress (if given).
     ElasticSystem(const BackgroundMesh       &mesh,
                   const LayerStack           &layers,
                   const ElasticityParameters &parameters,
-                  TimerOutput                &timer);
+                  TimerOutput                &timer,
+                  ConditionalOStream         *progress = nullptr);
 
     const DisplacementField &
     field() const

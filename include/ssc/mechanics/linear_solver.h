@@ -1,6 +1,8 @@
 #ifndef ssc_mechanics_linear_solver_h
 #define ssc_mechanics_linear_solver_h
 
+#include <deal.II/base/conditional_ostream.h>
+
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -48,9 +50,13 @@ namespace ssc
   class LinearSolver
   {
   public:
+    /// A solver for the system of @p field with @p constraints; a solve
+    /// that runs longer than a few seconds reports its iterations on
+    /// @p progress (if given), so that a long run never looks hung.
     LinearSolver(const LinearSolverParameters &parameters,
                  const DisplacementField      &field,
-                 const BoundaryConstraints    &constraints);
+                 const BoundaryConstraints    &constraints,
+                 ConditionalOStream           *progress = nullptr);
     ~LinearSolver();
 
     /// Builds the AMG hierarchy for @p matrix.
@@ -90,6 +96,7 @@ namespace ssc
     const LinearSolverParameters       &parameters;
     const DisplacementField            &field;
     const BoundaryConstraints          &constraints;
+    ConditionalOStream                 *progress;
     TrilinosWrappers::PreconditionAMG   preconditioner;
     std::unique_ptr<Epetra_MultiVector> near_null_space;
   };

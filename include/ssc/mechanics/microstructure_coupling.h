@@ -40,7 +40,7 @@ namespace ssc
 
     /// Builds and embeds (timed as "microstructure" and "embedding").
     void
-    setup();
+    setup(ConditionalOStream *timed_progress = nullptr);
 
     /// The summary's "embedded" entry (counts of triangles, segments,
     /// lobules and quadrature points, and what a fasciotomy cut).

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include <ssc/base/resource_limits.h>
 #include <ssc/mesh/layer_manifold.h>
 #include <ssc/mesh/layer_stack.h>
 #include <ssc/mesh/mesh_parameters.h>
@@ -30,13 +31,23 @@ namespace ssc
   class BackgroundMesh
   {
   public:
+    /// The mesh of @p layers as @p parameters say, refused beyond the
+    /// cell count of @p limits.
     BackgroundMesh(const LayerStack     &layers,
                    const MeshParameters &parameters,
-                   const MPI_Comm        mpi_communicator);
+                   const MPI_Comm        mpi_communicator,
+                   const ResourceLimits &limits = ResourceLimits());
 
-    /// Builds the coarse mesh and applies global and local refinement.
+    /// Builds the coarse mesh and applies global and local refinement;
+    /// throws, naming the parameter, if a layer's thickness is out of
+    /// range at a vertex or the mesh would exceed Limits/Max cells.
     void
     build();
+
+    /// Cells of the coarse mesh times 8 per global refinement (before any
+    /// local refinement): the size of the mesh before it is built.
+    static double
+    estimated_cells(const LayerStack &layers, const MeshParameters &parameters);
 
     parallel::distributed::Triangulation<3> &
     triangulation()
@@ -66,8 +77,15 @@ namespace ssc
     void
     check_fitted_circle() const;
 
+    /// Throws, naming the layer, unless every layer's thickness is in range
+    /// at the vertices and cell centres of the locally owned cells
+    /// (collective).
+    void
+    check_thickness_at_vertices() const;
+
     const LayerStack                       &layers;
     const MeshParameters                   &parameters;
+    const ResourceLimits                    limits;
     parallel::distributed::Triangulation<3> tria;
   };
 } // namespace ssc

@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -98,6 +99,9 @@ namespace ssc
     thickness(const double x, const double y) const;
 
     std::shared_ptr<FunctionParser<2>> thickness_function;
+    /// The thickness if it is a plain number (muParser is slow and takes
+    /// a lock per evaluation), NaN otherwise.
+    double constant_thickness = std::numeric_limits<double>::quiet_NaN();
   };
 
   /**
@@ -134,12 +138,28 @@ namespace ssc
     void
     finalise();
 
+    /// Thinnest and thickest layer accepted anywhere, mm: thinner layers
+    /// are below any tissue's scale and make the system singular, thicker
+    /// ones are no skin.
+    static constexpr double min_thickness = 1e-3, max_thickness = 1e4;
+
+    /// Smallest Poisson's ratio accepted (the bulk modulus vanishes at -1)
+    /// and the largest ratio of two layers' Young's moduli.
+    static constexpr double min_poisson_ratio    = -0.9,
+                            max_modulus_contrast = 1e6;
+
     /**
-     * Checks that every thickness is positive over the patch
-     * [-Lx/2, Lx/2] x [-Ly/2, Ly/2], sampled on a regular grid.
+     * Checks that every thickness is finite and within [min_thickness,
+     * max_thickness] over the patch [-Lx/2, Lx/2] x [-Ly/2, Ly/2], sampled
+     * on a regular grid (before the mesh exists; the background mesh checks
+     * its own vertices with check_thickness_at()).
      */
     void
     check_thickness_positive(const double Lx, const double Ly) const;
+
+    /// The same check at one point (x, y); throws naming the layer.
+    void
+    check_thickness_at(const double x, const double y) const;
 
     unsigned int
     n_layers() const
@@ -203,6 +223,10 @@ namespace ssc
     /// Parses the thickness expression of @p layer; throws naming it.
     static void
     initialise_thickness(Layer &layer);
+
+    /// Throws, naming the layer, unless its thickness at (x, y) is in range.
+    static void
+    check_thickness(const Layer &layer, const double x, const double y);
 
     std::string        layer_list = "skin, SAT, SM, DAT, deep";
     std::vector<Layer> layers;

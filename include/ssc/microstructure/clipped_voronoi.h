@@ -4,6 +4,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 
+#include <functional>
 #include <vector>
 
 namespace ssc
@@ -73,11 +74,15 @@ namespace ssc
    * centroidal Voronoi tessellation (CVT). Returns the CVT energy
    * sum_i int_{V_i} |x - p_i|^2 dx of the initial seeds and after every
    * iteration (n_iterations + 1 values, non-increasing in exact arithmetic).
+   * @p after_iteration (if given) is called with the number of iterations
+   * done after each one (progress reports).
    */
   std::vector<double>
-  lloyd_relaxation(const BoundingBox<3>  &box,
-                   std::vector<Point<3>> &seeds,
-                   const unsigned int     n_iterations);
+  lloyd_relaxation(
+    const BoundingBox<3>                    &box,
+    std::vector<Point<3>>                   &seeds,
+    const unsigned int                       n_iterations,
+    const std::function<void(unsigned int)> &after_iteration = {});
 } // namespace ssc
 
 #endif

@@ -2,8 +2,10 @@
 #define ssc_microstructure_ligaments_h
 
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 
+#include <memory>
 #include <vector>
 
 #include <ssc/mesh/layer_stack.h>
@@ -16,6 +18,23 @@ namespace ssc
   {
     Point<3> top;    ///< on the bottom of the skin
     Point<3> bottom; ///< on the top of the target layer (SM or deep)
+  };
+
+  /**
+   * The ligament density of @p parameters (per cm^2, a function of x and
+   * y) over the region's bounding rectangle: the expected number of
+   * ligaments in the region and the density's largest sampled value.
+   * Throws, naming the parameter, where the density is negative or not
+   * finite.
+   */
+  struct LigamentDensity
+  {
+    LigamentDensity(const BoundingBox<2>           &rectangle,
+                    const MicrostructureParameters &parameters);
+
+    std::shared_ptr<FunctionParser<2>> density;
+    double                             expected = 0;
+    double                             maximum  = 0;
   };
 
   /**

@@ -78,7 +78,9 @@ namespace ssc
    *
    * With a cylindrical region, lobules whose centroid lies outside the
    * cylinder are dropped, with their septa. Lobule ids start at
-   * @p first_id.
+   * @p first_id. @p progress receives one line on the seeds,
+   * @p timed_progress each Lloyd iteration once the relaxation has run for
+   * a few seconds.
    */
   LayerLobules
   build_layer_lobules(
@@ -87,7 +89,8 @@ namespace ssc
     const BoundingBox<2>                           &rectangle,
     const MicrostructureParameters                 &parameters,
     const unsigned int                              first_id,
-    const std::function<void(const std::string &)> &progress = {});
+    const std::function<void(const std::string &)> &progress       = {},
+    const std::function<void(const std::string &)> &timed_progress = {});
 
   /// Volume (mm^3) of layer @p layer over @p rectangle, by Gauss quadrature
   /// of its thickness (exact for polynomial thickness maps up to degree 7).

@@ -42,9 +42,11 @@ namespace ssc
                    const MicrostructureParameters &parameters);
 
     /// Builds what the parameters switch on; @p progress receives one line
-    /// per phase.
+    /// per phase, @p timed_progress the iterations of a long Lloyd
+    /// relaxation.
     void
-    build(const std::function<void(const std::string &)> &progress = {});
+    build(const std::function<void(const std::string &)> &progress       = {},
+          const std::function<void(const std::string &)> &timed_progress = {});
 
     /// Lobules and septa per adipose layer (only layers that carry lobules).
     const std::vector<LayerLobules> &

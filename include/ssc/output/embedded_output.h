@@ -13,6 +13,7 @@
 
 #include <ssc/embedding/point_locator.h>
 #include <ssc/mechanics/displacement_field.h>
+#include <ssc/output/run_output.h>
 
 namespace ssc
 {
@@ -38,13 +39,24 @@ namespace ssc
     EmbeddedFieldWriter(const Triangulation<dim, 3> &mesh,
                         const PointLocator          &locator);
 
-    /// Writes @p file (rank 0; collective).
+    /// Writes @p file into the run folder of @p output (rank 0;
+    /// collective).
     void
-    write(const std::string            &file,
+    write(const RunOutput              &output,
+          const std::string            &file,
           const DisplacementField      &field,
           const std::vector<CellField> &fields) const;
 
   private:
+    /// The patches (one per embedded cell) and field names of the values
+    /// @p u, @p gradient at locations.
+    void
+    fill_patches(const std::vector<Tensor<1, 3>>         &u,
+                 const std::vector<Tensor<2, 3>>         &gradient,
+                 const std::vector<CellField>            &fields,
+                 std::vector<DataOutBase::Patch<dim, 3>> &patches,
+                 std::vector<std::string>                &names) const;
+
     const Triangulation<dim, 3> &mesh;
     MPI_Comm                     communicator;
     /// Vertices of each cell in turn, then the cell centres.

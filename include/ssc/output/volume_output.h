@@ -9,6 +9,7 @@
 #include <ssc/materials/layer_materials.h>
 #include <ssc/mechanics/displacement_field.h>
 #include <ssc/mechanics/growth_field.h>
+#include <ssc/output/run_output.h>
 
 namespace ssc
 {
@@ -25,17 +26,17 @@ namespace ssc
                        const GrowthField       &growth);
 
   /**
-   * Writes the volume as VTU pieces (one per rank) with a PVTU record: the
-   * displacement, per cell the Cauchy stress of cell_cauchy_stresses(), its
-   * von Mises stress, the layer and the rank. Returns the name of the
-   * record.
+   * Writes the volume as VTU pieces (one per rank) with a PVTU record,
+   * volume_<step>, into the run folder of @p output: the displacement, per
+   * cell the Cauchy stress of cell_cauchy_stresses(), its von Mises
+   * stress, the layer and the rank. Returns the name of the record
+   * (collective).
    */
   std::string
   write_volume_vtu(const DisplacementField &field,
                    const LayerMaterials    &materials,
                    const GrowthField       &growth,
-                   const std::string       &directory,
-                   const std::string       &basename,
+                   const RunOutput         &output,
                    const unsigned int       step);
 } // namespace ssc
 

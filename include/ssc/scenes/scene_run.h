@@ -40,6 +40,15 @@ namespace ssc
       return run_output.progress();
     }
 
+    /// Progress lines that depend on timing (a long solve's iterations, a
+    /// long Lloyd relaxation): the same stream, silent in test mode so that
+    /// reference outputs stay deterministic.
+    ConditionalOStream &
+    timed_pcout()
+    {
+      return timed_progress;
+    }
+
     TimerOutput &
     timer()
     {
@@ -70,13 +79,14 @@ namespace ssc
     std::vector<double>
     phase_wall_times() const;
 
-    const Parameters &parameters;
-    MPI_Comm          mpi_communicator;
-    std::string       scene_name;
-    RunOutput         run_output;
-    TimerOutput       phase_timer;
-    Timer             total_timer;
-    double            memory_at_start_MB;
+    const Parameters  &parameters;
+    MPI_Comm           mpi_communicator;
+    std::string        scene_name;
+    RunOutput          run_output;
+    ConditionalOStream timed_progress;
+    TimerOutput        phase_timer;
+    Timer              total_timer;
+    double             memory_at_start_MB;
   };
 } // namespace ssc
 

@@ -2,14 +2,18 @@
 
 #include <functional>
 
-#include <ssc/output/microstructure_output.h>
+#include <ssc/output/field_output.h>
+#include <ssc/output/volume_output.h>
 
 namespace ssc
 {
-  MicrostructureOutput::MicrostructureOutput(
-    const MicrostructureCoupling &coupling,
-    const Kinematics              kinematics)
-    : coupling(coupling)
+  FieldOutput::FieldOutput(ElasticSystem                &system,
+                           const MicrostructureCoupling &coupling,
+                           const Kinematics              kinematics)
+    : field(system.field())
+    , materials(system.materials())
+    , growth(system.growth())
+    , coupling(coupling)
     , kinematics(kinematics)
   {
     const Microstructure *microstructure = coupling.get_microstructure();
@@ -43,7 +47,8 @@ namespace ssc
     {
       const std::string file =
         family + "_" + Utilities::int_to_string(step, 4) + ".vtu";
-      writer.write(output.path(file),
+      writer.write(output,
+                   file,
                    field,
                    {{name,
                      [&](const Tensor<2, 3> &F,
@@ -61,11 +66,12 @@ namespace ssc
 
 
   void
-  MicrostructureOutput::write(const DisplacementField &field,
-                              RunOutput               &output,
-                              const unsigned int       step,
-                              const double             time) const
+  FieldOutput::write(RunOutput         &output,
+                     const unsigned int step,
+                     const double       time) const
   {
+    output.add_pvd_record(
+      "volume", time, write_volume_vtu(field, materials, growth, output, step));
     if (septa_writer)
       write_family<2>(
         *septa_writer,
