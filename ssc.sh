@@ -4,11 +4,18 @@
 #                                           default the forearm indentation,
 #                                           with its plots) into output/
 #   ./ssc.sh test                           install, build, run the test suite
+#   ./ssc.sh test-debug                     the fast tests against Debian's
+#                                           debug deal.II (Asserts on), in
+#                                           build-debug/
+#   ./ssc.sh format-check                   every C++ file formatted with
+#                                           the deal.II .clang-format?
 #   ./ssc.sh build                          install and build only
+# SSC_RANKS sets the MPI ranks of "run" (default: one per core).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")" && pwd)"
 BUILD="${SSC_BUILD_DIR:-$ROOT/build}"
 JOBS="${SSC_JOBS:-2}"
+RANKS="${SSC_RANKS:-$(nproc)}"
 MAIN_SCENE="$ROOT/prm/forearm_indentation.prm"
 
 PACKAGES="libdeal.ii-dev libcgal-dev libeigen3-dev libboost-dev
@@ -31,17 +38,20 @@ install_packages() {
   fi
 }
 
+# configure BUILD_DIR BUILD_TYPE [cmake options]
 configure() {
+  local dir="$1" type="$2"
+  shift 2
   export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
-  cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DSSC_ENABLE_TESTS=ON > "$BUILD/cmake.log" 2>&1 ||
-    { cat "$BUILD/cmake.log"; exit 1; }
+  mkdir -p "$dir"
+  cmake -S "$ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" \
+    -DSSC_ENABLE_TESTS=ON "$@" > "$dir/cmake.log" 2>&1 ||
+    { cat "$dir/cmake.log"; exit 1; }
 }
 
 build() {
   install_packages
-  mkdir -p "$BUILD"
-  configure
+  configure "$BUILD" Release
   cmake --build "$BUILD" --target ssc_app -- -j "$JOBS"
 }
 
@@ -65,7 +75,12 @@ case "${1:-run}" in
     else
       prm="$MAIN_SCENE"
     fi
-    "$BUILD/bin/ssc" "$prm" "$@"
+    # one MPI rank per core unless SSC_RANKS says otherwise
+    if [ "$RANKS" -gt 1 ]; then
+      mpirun -np "$RANKS" "$BUILD/bin/ssc" "$prm" "$@"
+    else
+      "$BUILD/bin/ssc" "$prm" "$@"
+    fi
     # pictures of the main scene (force-depth, surface profile, section)
     if [ "$prm" = "$MAIN_SCENE" ] && [ $# -eq 0 ]; then
       /usr/bin/python3 "$ROOT/scripts/plot_indentation.py" \
@@ -78,8 +93,31 @@ case "${1:-run}" in
     # builds the test programs and runs them (deal.II test driver)
     ctest --output-on-failure -j "$JOBS" --timeout 900
     ;;
+  test-debug)
+    # The fast tests (tests/CMakeLists.txt: SSC_DEBUG_TESTS) built and run
+    # against Debian's debug deal.II, so that every Assert is checked.
+    install_packages
+    DEBUG_BUILD="${SSC_DEBUG_BUILD_DIR:-$ROOT/build-debug}"
+    configure "$DEBUG_BUILD" Debug -DSSC_DEBUG_TESTS_ONLY=ON
+    cmake --build "$DEBUG_BUILD" --target ssc_app -- -j "$JOBS"
+    cd "$DEBUG_BUILD"
+    ctest --output-on-failure -j "$JOBS" --timeout 900
+    ;;
+  format-check)
+    command -v clang-format > /dev/null || PACKAGES="clang-format" install_packages
+    cd "$ROOT"
+    bad=$(git ls-files '*.h' '*.cc' | while read -r f; do
+      clang-format --dry-run -Werror "$f" > /dev/null 2>&1 || echo "$f"
+    done)
+    if [ -n "$bad" ]; then
+      echo "ssc.sh: not formatted with .clang-format (run scripts/indent):"
+      echo "$bad"
+      exit 1
+    fi
+    echo "ssc.sh: every C++ file is formatted"
+    ;;
   *)
-    echo "usage: $0 run [FILE.prm] [-s ...] | test | build" >&2
+    echo "usage: $0 run [FILE.prm] [-s ...] | test | test-debug | format-check | build" >&2
     exit 1
     ;;
 esac
