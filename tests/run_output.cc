@@ -49,7 +49,7 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  namespace fs = std::filesystem;
+  namespace fs             = std::filesystem;
   const std::string folder = "run_output_folder";
   fs::remove_all(folder);
   fs::create_directories(folder);
@@ -67,13 +67,10 @@ main(int argc, char **argv)
     std::ofstream(folder + "/" + name) << "old";
   {
     ssc::RunOutput output(folder, MPI_COMM_WORLD, false);
-    for (const std::string name : {"volume_0003.0.vtu",
-                                   "summary.json",
-                                   "summary.json.tmp",
-                                   "notes.txt"})
+    for (const std::string name :
+         {"volume_0003.0.vtu", "summary.json", "summary.json.tmp", "notes.txt"})
       dealii::deallog << name << " after the start of a new run: "
-                      << (fs::exists(folder + "/" + name) ? "kept" :
-                                                            "removed")
+                      << (fs::exists(folder + "/" + name) ? "kept" : "removed")
                       << std::endl;
 
     output.write_text("table.csv", "a,b\n1,2\n");
@@ -82,14 +79,13 @@ main(int argc, char **argv)
                     << fs::exists(folder + "/table.csv.tmp") << std::endl;
 
     // a write that fails half-way keeps the earlier content
-    const std::string path = folder + "/table.csv";
-    const std::string message =
-      error_of([&]() {
-        ssc::RunOutput::write_atomically(path, [](std::ostream &out) {
-          out << "partial";
-          out.setstate(std::ios::badbit); // the disk is full
-        });
+    const std::string path    = folder + "/table.csv";
+    const std::string message = error_of([&]() {
+      ssc::RunOutput::write_atomically(path, [](std::ostream &out) {
+        out << "partial";
+        out.setstate(std::ios::badbit); // the disk is full
       });
+    });
     dealii::deallog << "failed write: "
                     << (message.find("Cannot write '" + path + "'") == 0 ?
                           "names the file" :
@@ -111,12 +107,10 @@ main(int argc, char **argv)
 
     // a target that cannot be created
     fs::create_directories(folder + "/occupied.csv");
-    const std::string occupied = error_of([&]() {
-      output.write_text("occupied.csv", "x");
-    });
+    const std::string occupied =
+      error_of([&]() { output.write_text("occupied.csv", "x"); });
     dealii::deallog << "target is a folder: "
-                    << (occupied.find("Cannot write") == 0 ? "error" :
-                                                              occupied)
+                    << (occupied.find("Cannot write") == 0 ? "error" : occupied)
                     << std::endl;
   }
   fs::remove_all(folder);

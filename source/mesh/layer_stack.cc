@@ -315,10 +315,9 @@ namespace ssc
     layer.thickness_function =
       parse_surface_expression(layer.thickness_expression,
                                "Layer stack/" + layer.name + "/Thickness");
-    layer.constant_thickness =
-      layer.has_constant_thickness() ?
-        layer.thickness_function->value(Point<2>()) :
-        std::numeric_limits<double>::quiet_NaN();
+    layer.constant_thickness = layer.has_constant_thickness() ?
+                                 layer.thickness_function->value(Point<2>()) :
+                                 std::numeric_limits<double>::quiet_NaN();
   }
 
 
