@@ -200,9 +200,7 @@ main(int argc, char **argv)
           }
       }
       for (const auto &[dof, X] : support)
-        u[dof] = stretch * X[component[dof]];
-      for (unsigned int i = 0; i < u.size(); ++i)
-        u[i] += uniform(generator);
+        u[dof] = stretch * X[component[dof]] + uniform(generator);
       u.compress(VectorOperation::insert);
       const auto [largest_error, largest_entry] =
         tangent_error(elasticity, u, 1e-6, 7);

@@ -34,8 +34,8 @@ tangent_error(ssc::ElasticSystem                          &elasticity,
       TrilinosWrappers::MPI::Vector plus(u), minus(u);
       plus[j] += h;
       minus[j] -= h;
-      plus.compress(VectorOperation::insert);
-      minus.compress(VectorOperation::insert);
+      plus.compress(VectorOperation::add);
+      minus.compress(VectorOperation::add);
       elasticity.field().set_solution(plus);
       elasticity.assemble(false);
       TrilinosWrappers::MPI::Vector r_plus(elasticity.rhs());

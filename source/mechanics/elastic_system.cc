@@ -69,6 +69,13 @@ namespace ssc
     assembler.add_couplings(boundary_constraints.prescribed(), sparsity);
     sparsity.compress();
     matrix.reinit(sparsity);
+    if (parameters.linear_solver.method == LinearSolverMethod::block)
+      {
+        pressure_system =
+          std::make_unique<PressureSystem>(displacement.dof_handler(),
+                                           parameters.n_pressure_modes());
+        pressure_system->setup(sparsity, boundary_constraints.prescribed());
+      }
     system_rhs.reinit(owned, communicator);
     last_update.reinit(owned, communicator);
   }
@@ -95,7 +102,8 @@ namespace ssc
                          constraints,
                          external_loads.body_force,
                          with_tangent ? &matrix : nullptr,
-                         system_rhs);
+                         system_rhs,
+                         pressure_system.get());
     for (const auto &[dof, force] : external_loads.nodal_forces)
       if (displacement.locally_owned_dofs().is_element(dof))
         system_rhs[dof] += force;
@@ -111,6 +119,13 @@ namespace ssc
   {
     TimerOutput::Scope t(timer, "solve");
     last_update = 0;
+    if (pressure_system)
+      return linear_solver.solve_saddle_point(matrix,
+                                              *pressure_system,
+                                              last_update,
+                                              system_rhs,
+                                              boundary_constraints.increment(),
+                                              target);
     return linear_solver.solve(matrix,
                                last_update,
                                system_rhs,

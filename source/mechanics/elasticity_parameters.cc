@@ -70,6 +70,17 @@ namespace ssc
   void
   ElasticityParameters::check() const
   {
+    AssertThrow(linear_solver.method != LinearSolverMethod::block ||
+                  n_pressure_modes() > 0,
+                ExcMessage("Elasticity/Linear solver/Method = block solves "
+                           "the displacement-pressure system: it needs "
+                           "Formulation = mixed, mean dilatation or "
+                           "enhanced."));
+    AssertThrow(linear_solver.method != LinearSolverMethod::block ||
+                  volumetric_stabilisation < 1.,
+                ExcMessage("Elasticity/Linear solver/Method = block needs "
+                           "Volumetric stabilisation below 1 (a projected "
+                           "dilatation)."));
     AssertThrow(formulation != Formulation::enhanced || degree == 1,
                 ExcMessage("Elasticity/Formulation = enhanced (incompatible "
                            "modes) is a Q1 element: set Elasticity/Degree = "

@@ -15,6 +15,7 @@ namespace ssc
     /// factor M^{-1} H M^{-1}.
     struct ProjectedDilatation
     {
+      FullMatrix<double>               mass, volumetric; // M, H
       FullMatrix<double>               mass_inverse;
       Vector<double>                   theta, pressure;
       FullMatrix<double>               stiffness;
@@ -37,7 +38,8 @@ namespace ssc
                                const Vector<double> &u,
                                const bool            with_matrix,
                                FullMatrix<double>   &cell_matrix,
-                               Vector<double>       &cell_residual) const
+                               Vector<double>       &cell_residual,
+                               CellPressureBlock    *block) const
   {
     const FiniteElement<3> &fe         = fe_values.get_fe();
     const VolumetricEnergy &volumetric = material.volumetric();
@@ -83,6 +85,7 @@ namespace ssc
                 moments(a) += b[a] * determinant(F[q]) * JxW;
               }
           }
+        projection.mass = mass;
         projection.mass_inverse.reinit(n_p, n_p);
         projection.mass_inverse.invert(mass);
         projection.theta.reinit(n_p);
@@ -107,6 +110,7 @@ namespace ssc
                              b[a] * b[c] * JxW;
               }
           }
+        projection.volumetric = H;
         projection.pressure.reinit(n_p);
         projection.mass_inverse.vmult(projection.pressure, pressure_moments);
         // M^{-1} H M^{-1}
@@ -197,6 +201,23 @@ namespace ssc
               for (unsigned int d = 0; d < 3; ++d)
                 cell_matrix(dof_of[row][c], dof_of[column][d]) +=
                   W[row][c][d] * g[column];
+      }
+    Assert(block == nullptr || (projected && with_matrix && beta < 1.),
+           ExcMessage("A pressure block needs the projected dilatation."));
+    if (block != nullptr)
+      {
+        // K_0: all but the condensed volumetric part; C = M H^{-1} M /
+        // (1 - beta), so that B^T C^{-1} B is that part
+        block->reduced  = cell_matrix;
+        block->coupling = B;
+        FullMatrix<double> H_inverse(n_p, n_p), H_inverse_M(n_p, n_p);
+        H_inverse.invert(projection.volumetric);
+        H_inverse.mmult(H_inverse_M, projection.mass);
+        block->pressure.reinit(n_p, n_p);
+        projection.mass.mmult(block->pressure, H_inverse_M);
+        block->pressure *= 1. / (1. - beta);
+        block->mass          = projection.mass;
+        block->shear_modulus = material.moduli().shear_modulus;
       }
     if (projected && with_matrix && beta < 1.)
       {

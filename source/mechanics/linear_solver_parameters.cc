@@ -6,6 +6,20 @@ namespace ssc
   LinearSolverParameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
+    prm.add_parameter(
+      "Method",
+      method,
+      "cg: CG on the displacement system, preconditioned by AMG (every "
+      "formulation; its iterations grow with the bulk modulus). block: the "
+      "displacement-pressure saddle point of the mixed formulations (mixed, "
+      "mean dilatation, enhanced) by FGMRES with a block-triangular "
+      "preconditioner, AMG on the displacement block without the bulk "
+      "modulus and the cells' pressure blocks for the Schur complement: "
+      "the same displacement, with iterations that do not grow with nu. "
+      "direct: sparse LU factorisation (MUMPS through Trilinos Amesos) of "
+      "the displacement system: exact whatever nu and contrast, its memory "
+      "and time grow faster than linearly with the DoFs (small and "
+      "medium problems). Trust-region steps always use CG with AMG.");
     prm.add_parameter("Tolerance",
                       tolerance,
                       "CG stops when the residual has dropped by this factor "

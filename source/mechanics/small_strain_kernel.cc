@@ -85,6 +85,76 @@ namespace ssc
       for (unsigned int i = 0; i < n_dofs; ++i)
         cell_rhs(i) += rhs(i) - f_correction(i);
     }
+
+
+    /**
+     * The pressure block of the cell (CellPressureBlock) from its
+     * deviatoric matrix @p deviatoric over the strain modes, the coupling
+     * @p coupling of the pressure modes to them, the pressure mass matrix
+     * @p mass, the bulk modulus @p kappa and the shear modulus @p mu: the
+     * system [K B^T; B -M / kappa] on (u, alpha, p) with the incompatible
+     * modes alpha (modes n_dofs, ...) eliminated: K_0 = K_uu - K_ua
+     * K_aa^{-1} K_au, B = B_u - B_a K_aa^{-1} K_au, C = M / kappa + B_a
+     * K_aa^{-1} B_a^T. Condensing its pressure gives the cell matrix.
+     */
+    void
+    pressure_block(const FullMatrix<double> &deviatoric,
+                   const FullMatrix<double> &coupling,
+                   const FullMatrix<double> &mass,
+                   const double              kappa,
+                   const double              mu,
+                   const unsigned int        n_dofs,
+                   CellPressureBlock        &block)
+    {
+      const unsigned int n_modes = deviatoric.m(), n_a = n_modes - n_dofs;
+      const unsigned int n_p = mass.m();
+      block.reduced.reinit(n_dofs, n_dofs);
+      block.coupling.reinit(n_p, n_dofs);
+      block.pressure.reinit(n_p, n_p);
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          block.reduced(i, j) = deviatoric(i, j);
+      for (unsigned int a = 0; a < n_p; ++a)
+        {
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            block.coupling(a, i) = coupling(a, i);
+          for (unsigned int b = 0; b < n_p; ++b)
+            block.pressure(a, b) = mass(a, b) / kappa;
+        }
+      if (n_a > 0)
+        {
+          // G = K_aa^{-1} [K_au, B_a^T]
+          FullMatrix<double> K_aa(n_a, n_a), rhs(n_a, n_dofs + n_p);
+          for (unsigned int a = 0; a < n_a; ++a)
+            {
+              for (unsigned int b = 0; b < n_a; ++b)
+                K_aa(a, b) = deviatoric(n_dofs + a, n_dofs + b);
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                rhs(a, j) = deviatoric(n_dofs + a, j);
+              for (unsigned int c = 0; c < n_p; ++c)
+                rhs(a, n_dofs + c) = coupling(c, n_dofs + a);
+            }
+          K_aa.gauss_jordan();
+          FullMatrix<double> G(n_a, n_dofs + n_p);
+          K_aa.mmult(G, rhs);
+          for (unsigned int a = 0; a < n_a; ++a)
+            {
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                for (unsigned int j = 0; j < n_dofs; ++j)
+                  block.reduced(i, j) -= deviatoric(i, n_dofs + a) * G(a, j);
+              for (unsigned int c = 0; c < n_p; ++c)
+                {
+                  const double B_ca = coupling(c, n_dofs + a);
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    block.coupling(c, j) -= B_ca * G(a, j);
+                  for (unsigned int d = 0; d < n_p; ++d)
+                    block.pressure(c, d) += B_ca * G(a, n_dofs + d);
+                }
+            }
+        }
+      block.mass          = mass;
+      block.shear_modulus = mu;
+    }
   } // namespace
 
 
@@ -102,7 +172,8 @@ namespace ssc
                               const GrowthField  &growth,
                               const Function<3>  *body_force,
                               FullMatrix<double> &cell_matrix,
-                              Vector<double>     &cell_rhs) const
+                              Vector<double>     &cell_rhs,
+                              CellPressureBlock  *block) const
   {
     const FiniteElement<3>          &fe     = fe_values.get_fe();
     const unsigned int               n_dofs = fe.n_dofs_per_cell();
@@ -202,6 +273,17 @@ namespace ssc
     for (unsigned int i = 0; i < n_modes; ++i)
       for (unsigned int j = i + 1; j < n_modes; ++j)
         matrix(i, j) = matrix(j, i);
+
+    Assert(block == nullptr || mixed,
+           ExcMessage("A pressure block needs a pressure space."));
+    if (block != nullptr)
+      pressure_block(matrix,
+                     coupling,
+                     mass,
+                     kappa,
+                     material.moduli().shear_modulus,
+                     n_dofs,
+                     *block);
 
     if (mixed)
       {

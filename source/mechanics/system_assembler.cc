@@ -1,6 +1,10 @@
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/grid/filtered_iterator.h>
+
 #include <deal.II/meshworker/mesh_loop.h>
+
+#include <cmath>
 
 #include <ssc/mechanics/system_assembler.h>
 
@@ -76,7 +80,8 @@ namespace ssc
                              const TrilinosWrappers::MPI::Vector       &u,
                              const TrilinosWrappers::MPI::Vector       *w,
                              const Function<3> *body_force,
-                             const bool         with_matrix) const
+                             const bool         with_matrix,
+                             const bool         with_pressure) const
   {
     const unsigned int n = field.fe().n_dofs_per_cell();
     data.matrix.reinit(n, n);
@@ -84,6 +89,7 @@ namespace ssc
     data.dofs.resize(n);
     data.inverted = false;
     data.skipped  = false;
+    data.cell     = cell;
     if (w != nullptr)
       {
         cell->get_dof_values(*w, scratch.w);
@@ -95,21 +101,50 @@ namespace ssc
       }
     cell->get_dof_indices(data.dofs);
     cell->get_dof_values(u, scratch.u);
+    CellPressureBlock *const block = with_pressure ? &data.pressure : nullptr;
     if (!kernel.residual_and_tangent(cell,
                                      scratch.fe_values,
                                      scratch.u,
                                      body_force,
                                      with_matrix,
                                      data.matrix,
-                                     data.residual))
+                                     data.residual,
+                                     block))
       {
         data.inverted = true;
         return;
       }
+    // the contributions (embedded septa, ligaments) belong to K_0: they
+    // are what the cell matrix gains beyond the volume's
+    FullMatrix<double> volume_matrix;
+    if (block != nullptr)
+      volume_matrix = data.matrix;
     const Kinematics kinematics = kernel.material(cell).kinematics();
     for (const CellContribution *contribution : cell_contributions)
       contribution->add_to_cell(
         cell, scratch.u, kinematics, with_matrix, data.matrix, data.residual);
+    if (block != nullptr && !cell_contributions.empty())
+      {
+        block->reduced.add(1., data.matrix);
+        block->reduced.add(-1., volume_matrix);
+      }
+    if (block != nullptr)
+      block->augment();
+    AssertDimension(data.matrix.m(), n);
+    AssertDimension(data.residual.size(), n);
+#ifdef DEBUG
+    // every law and contribution derives from an energy: the cell tangent
+    // is its Hessian, so it must be symmetric
+    if (with_matrix)
+      {
+        const double scale = data.matrix.linfty_norm();
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            Assert(std::abs(data.matrix(i, j) - data.matrix(j, i)) <=
+                     1e-8 * scale,
+                   ExcMessage("The cell tangent is not symmetric."));
+      }
+#endif
     if (w != nullptr)
       for (unsigned int i = 0; i < n; ++i)
         data.residual(i) *= scratch.w(i);
@@ -117,23 +152,27 @@ namespace ssc
 
 
   void
-  SystemAssembler::loop(
-    const TrilinosWrappers::MPI::Vector         &u,
-    const TrilinosWrappers::MPI::Vector         *w,
-    const Function<3>                           *body_force,
-    const bool                                   with_matrix,
-    const std::function<void(const CellData &)> &copier) const
+  SystemAssembler::loop(const TrilinosWrappers::MPI::Vector &u,
+                        const TrilinosWrappers::MPI::Vector *w,
+                        const Function<3>                   *body_force,
+                        const bool                           with_matrix,
+                        const std::function<void(const CellData &)> &copier,
+                        const bool with_pressure) const
   {
     const AssemblyScratch sample(field.mapping(),
                                  field.fe(),
                                  kernel.quadrature(),
                                  VolumeKernel::update_flags());
     using Iterator = DoFHandler<3>::active_cell_iterator;
+    // only the locally owned cells: mesh_loop calls the copier for every
+    // cell of its range, also where it skips the worker, and would hand it
+    // the copy data of an earlier cell
     MeshWorker::mesh_loop(
-      field.dof_handler().begin_active(),
-      Iterator(field.dof_handler().end()),
+      filter_iterators(field.dof_handler().active_cell_iterators(),
+                       IteratorFilters::LocallyOwnedCell()),
       [&](const Iterator &cell, AssemblyScratch &scratch, CellData &data) {
-        cell_work(cell, scratch, data, u, w, body_force, with_matrix);
+        cell_work(
+          cell, scratch, data, u, w, body_force, with_matrix, with_pressure);
       },
       copier,
       sample,
@@ -147,10 +186,15 @@ namespace ssc
                             const AffineConstraints<double>     &constraints,
                             const Function<3>                   *body_force,
                             TrilinosWrappers::SparseMatrix      *matrix,
-                            TrilinosWrappers::MPI::Vector       &rhs) const
+                            TrilinosWrappers::MPI::Vector       &rhs,
+                            PressureSystem                      *pressure) const
   {
+    if (matrix == nullptr)
+      pressure = nullptr;
     if (matrix != nullptr)
       *matrix = 0;
+    if (pressure != nullptr)
+      pressure->reset();
     rhs                   = 0;
     unsigned int inverted = 0;
     // adds a block (tangent, residual r) as -r to the right-hand side
@@ -165,16 +209,41 @@ namespace ssc
       else
         constraints.distribute_local_to_global(minus_r, dofs, rhs);
     };
-    loop(u, nullptr, body_force, matrix != nullptr, [&](const CellData &data) {
-      if (data.inverted)
-        ++inverted;
-      else
-        add_block(data.dofs, data.matrix, data.residual);
-    });
+    loop(
+      u,
+      nullptr,
+      body_force,
+      matrix != nullptr,
+      [&](const CellData &data) {
+        if (data.inverted)
+          ++inverted;
+        else
+          {
+            add_block(data.dofs, data.matrix, data.residual);
+            if (pressure != nullptr)
+              pressure->add_cell(data.cell,
+                                 data.dofs,
+                                 data.pressure,
+                                 constraints);
+          }
+      },
+      pressure != nullptr);
+    // the dof contributions (punch contact) are displacement-only: K_0
     for (const DofContribution *contribution : dof_contributions)
-      contribution->add_nonlinear(u, matrix != nullptr, add_block);
+      contribution->add_nonlinear(
+        u,
+        matrix != nullptr,
+        [&](const std::vector<types::global_dof_index> &dofs,
+            const FullMatrix<double>                   &block_matrix,
+            const Vector<double>                       &block_residual) {
+          add_block(dofs, block_matrix, block_residual);
+          if (pressure != nullptr)
+            pressure->add_to_reduced(dofs, block_matrix, constraints);
+        });
     if (matrix != nullptr)
       matrix->compress(VectorOperation::add);
+    if (pressure != nullptr)
+      pressure->compress();
     rhs.compress(VectorOperation::add);
     return Utilities::MPI::sum(inverted, u.get_mpi_communicator());
   }

@@ -25,7 +25,8 @@ namespace ssc
     const Function<3>                         *body_force,
     const bool                                 with_matrix,
     FullMatrix<double>                        &cell_matrix,
-    Vector<double>                            &cell_residual) const
+    Vector<double>                            &cell_residual,
+    CellPressureBlock                         *block) const
   {
     fe_values.reinit(cell);
     const Material &law = material(cell);
@@ -38,10 +39,17 @@ namespace ssc
                                     u,
                                     with_matrix,
                                     cell_matrix,
-                                    cell_residual);
+                                    cell_residual,
+                                    block);
     // r = K u - f
-    small_strain.assemble(
-      cell, fe_values, law, growth, body_force, cell_matrix, cell_residual);
+    small_strain.assemble(cell,
+                          fe_values,
+                          law,
+                          growth,
+                          body_force,
+                          cell_matrix,
+                          cell_residual,
+                          block);
     cell_residual *= -1.;
     cell_matrix.vmult_add(cell_residual, u);
     return true;

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/growth_field.h>
 #include <ssc/mechanics/linear_solver.h>
+#include <ssc/mechanics/pressure_system.h>
 #include <ssc/mechanics/system_assembler.h>
 #include <ssc/mechanics/volume_kernel.h>
 #include <ssc/mesh/background_mesh.h>
@@ -175,19 +177,21 @@ namespace ssc
     }
 
   private:
-    const ElasticityParameters    &parameters;
-    TimerOutput                   &timer;
-    LayerMaterials                 layer_materials;
-    DisplacementField              displacement;
-    BoundaryConstraints            boundary_constraints;
-    GrowthField                    growth_field;
-    VolumeKernel                   kernel;
-    SystemAssembler                assembler;
-    LinearSolver                   linear_solver;
-    Loads                          external_loads;
-    TrilinosWrappers::SparseMatrix matrix;
-    TrilinosWrappers::MPI::Vector  system_rhs;
-    TrilinosWrappers::MPI::Vector  last_update;
+    const ElasticityParameters &parameters;
+    TimerOutput                &timer;
+    LayerMaterials              layer_materials;
+    DisplacementField           displacement;
+    BoundaryConstraints         boundary_constraints;
+    GrowthField                 growth_field;
+    VolumeKernel                kernel;
+    SystemAssembler             assembler;
+    LinearSolver                linear_solver;
+    /// The displacement-pressure system (Linear solver/Method = block).
+    std::unique_ptr<PressureSystem> pressure_system;
+    Loads                           external_loads;
+    TrilinosWrappers::SparseMatrix  matrix;
+    TrilinosWrappers::MPI::Vector   system_rhs;
+    TrilinosWrappers::MPI::Vector   last_update;
   };
 } // namespace ssc
 

@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ssc/materials/material.h>
+#include <ssc/mechanics/cell_pressure_block.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/growth_field.h>
 
@@ -41,6 +42,8 @@ namespace ssc
     /// cell_matrix of @p cell (@p fe_values reinit'ed on it) at its dof
     /// values @p u for @p material. Returns false if the cell is inverted
     /// (det F or the projected dilatation <= 0 at a quadrature point).
+    /// With @p block (mixed formulations, with the matrix) also the
+    /// tangent's displacement-pressure structure.
     bool
     assemble(const DoFHandler<3>::active_cell_iterator &cell,
              const FEValues<3>                         &fe_values,
@@ -50,7 +53,8 @@ namespace ssc
              const Vector<double>                      &u,
              const bool                                 with_matrix,
              FullMatrix<double>                        &cell_matrix,
-             Vector<double>                            &cell_residual) const;
+             Vector<double>                            &cell_residual,
+             CellPressureBlock                         *block = nullptr) const;
 
   private:
     const ElasticityParameters &parameters;

@@ -4,15 +4,18 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <string>
 
 #include <ssc/mechanics/boundary_constraints.h>
 #include <ssc/mechanics/displacement_field.h>
 #include <ssc/mechanics/linear_solver_parameters.h>
+#include <ssc/mechanics/pressure_system.h>
 #include <ssc/mechanics/truncated_cg.h>
 
 class Epetra_MultiVector;
@@ -78,6 +81,22 @@ namespace ssc
           const SolveTarget                    &target);
 
     /**
+     * Solves K x = @p rhs for the tangent K = K_0 + B^T C^{-1} B of
+     * @p system through its saddle point [K_0 B^T; B -C] [x; p] = [rhs; 0]
+     * by FGMRES, preconditioned block-triangularly: AMG on K_0 (no bulk
+     * modulus in it) and the cells' Schur approximations, until the
+     * residual of @p matrix (K) x = @p rhs meets the tolerance. Targets,
+     * constraints and errors as solve().
+     */
+    LinearSolveReport
+    solve_saddle_point(const TrilinosWrappers::SparseMatrix &matrix,
+                       const PressureSystem                 &system,
+                       TrilinosWrappers::MPI::Vector        &x,
+                       const TrilinosWrappers::MPI::Vector  &rhs,
+                       const AffineConstraints<double>      &constraints,
+                       const SolveTarget                    &target);
+
+    /**
      * The trust-region step of truncated_cg() within @p radius in the
      * preconditioner's norm, to @p target's tolerances; the constrained
      * entries stay zero, @p constraints are distributed afterwards. With
@@ -93,6 +112,14 @@ namespace ssc
                  const bool                            new_preconditioner);
 
   private:
+    /// After a solve stopped by its iteration limit: an error unless its
+    /// residual is still acceptable for @p target.
+    static void
+    check_unfinished(const SolverControl::NoConvergence &e,
+                     const SolveTarget                  &target,
+                     const double                        tolerance,
+                     const std::string                  &solver);
+
     const LinearSolverParameters       &parameters;
     const DisplacementField            &field;
     const BoundaryConstraints          &constraints;

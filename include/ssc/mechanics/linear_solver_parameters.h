@@ -3,20 +3,42 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
+#include <utility>
+
+#include <ssc/base/enum_table.h>
+
 namespace ssc
 {
   using namespace dealii;
 
-  /// CG with Trilinos ML smoothed-aggregation AMG (section
+  /// How the linear systems are solved.
+  enum class LinearSolverMethod
+  {
+    cg,
+    block,
+    direct
+  };
+
+  constexpr std::array<std::pair<LinearSolverMethod, const char *>, 3>
+  enum_table(LinearSolverMethod)
+  {
+    return {{{LinearSolverMethod::cg, "cg"},
+             {LinearSolverMethod::block, "block"},
+             {LinearSolverMethod::direct, "direct"}}};
+  }
+
+  /// Krylov solver and Trilinos ML smoothed-aggregation AMG (section
   /// "Elasticity/Linear solver").
   struct LinearSolverParameters
   {
-    double       tolerance             = 1e-8;
-    unsigned int max_iterations        = 1000;
-    bool         rigid_body_modes      = true;
-    bool         smoothed_aggregation  = true;
-    double       aggregation_threshold = 1e-4;
-    unsigned int smoother_sweeps       = 2;
+    LinearSolverMethod method                = LinearSolverMethod::cg;
+    double             tolerance             = 1e-8;
+    unsigned int       max_iterations        = 1000;
+    bool               rigid_body_modes      = true;
+    bool               smoothed_aggregation  = true;
+    double             aggregation_threshold = 1e-4;
+    unsigned int       smoother_sweeps       = 2;
 
     /// Declares subsection "Linear solver" of the current section, bound
     /// to the members.

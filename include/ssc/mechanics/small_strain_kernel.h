@@ -12,6 +12,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ssc/materials/material.h>
+#include <ssc/mechanics/cell_pressure_block.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/growth_field.h>
 
@@ -33,7 +34,9 @@ namespace ssc
     SmallStrainKernel(const ElasticityParameters &parameters,
                       const Quadrature<3>        &quadrature);
 
-    /// K and f of @p cell (@p fe_values reinit'ed on it) for @p material.
+    /// K and f of @p cell (@p fe_values reinit'ed on it) for @p material;
+    /// with @p block (mixed formulations only) also K's
+    /// displacement-pressure structure.
     void
     assemble(const DoFHandler<3>::active_cell_iterator &cell,
              const FEValues<3>                         &fe_values,
@@ -41,7 +44,8 @@ namespace ssc
              const GrowthField                         &growth,
              const Function<3>                         *body_force,
              FullMatrix<double>                        &cell_matrix,
-             Vector<double>                            &cell_rhs) const;
+             Vector<double>                            &cell_rhs,
+             CellPressureBlock                         *block = nullptr) const;
 
   private:
     const ElasticityParameters &parameters;

@@ -13,8 +13,10 @@
 #include <vector>
 
 #include <ssc/mechanics/cell_contribution.h>
+#include <ssc/mechanics/cell_pressure_block.h>
 #include <ssc/mechanics/displacement_field.h>
 #include <ssc/mechanics/dof_contribution.h>
+#include <ssc/mechanics/pressure_system.h>
 #include <ssc/mechanics/volume_kernel.h>
 
 namespace ssc
@@ -51,15 +53,17 @@ namespace ssc
     /**
      * At the (ghosted) displacement @p u: -r into @p rhs and, with @p
      * matrix, the tangent into it, both distributed with @p constraints
-     * (zeroed first). Returns the number of inverted cells on all ranks
-     * (their contributions are left out).
+     * (zeroed first); with @p pressure (and @p matrix) also the tangent's
+     * displacement-pressure structure into it. Returns the number of
+     * inverted cells on all ranks (their contributions are left out).
      */
     unsigned int
     assemble(const TrilinosWrappers::MPI::Vector &u,
              const AffineConstraints<double>     &constraints,
              const Function<3>                   *body_force,
              TrilinosWrappers::SparseMatrix      *matrix,
-             TrilinosWrappers::MPI::Vector       &rhs) const;
+             TrilinosWrappers::MPI::Vector       &rhs,
+             PressureSystem                      *pressure = nullptr) const;
 
     /**
      * The virtual work of the residual r(u) against the (ghosted) weight
@@ -79,11 +83,14 @@ namespace ssc
     /// What one cell gives.
     struct CellData
     {
+      DoFHandler<3>::active_cell_iterator  cell;
       FullMatrix<double>                   matrix;
       Vector<double>                       residual;
       std::vector<types::global_dof_index> dofs;
-      bool                                 inverted = false;
-      bool                                 skipped  = false;
+      /// the displacement-pressure structure (if asked for)
+      CellPressureBlock pressure;
+      bool              inverted = false;
+      bool              skipped  = false;
     };
 
     /// The cell's residual (and tangent) at @p u into @p data, the
@@ -97,7 +104,8 @@ namespace ssc
               const TrilinosWrappers::MPI::Vector       &u,
               const TrilinosWrappers::MPI::Vector       *w,
               const Function<3>                         *body_force,
-              const bool                                 with_matrix) const;
+              const bool                                 with_matrix,
+              const bool with_pressure = false) const;
 
     /// Runs the loop over the locally owned cells with @p copier.
     void
@@ -105,7 +113,8 @@ namespace ssc
          const TrilinosWrappers::MPI::Vector         *w,
          const Function<3>                           *body_force,
          const bool                                   with_matrix,
-         const std::function<void(const CellData &)> &copier) const;
+         const std::function<void(const CellData &)> &copier,
+         const bool with_pressure = false) const;
 
     const DisplacementField              &field;
     const VolumeKernel                   &kernel;

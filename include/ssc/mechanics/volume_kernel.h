@@ -53,8 +53,9 @@ namespace ssc
     /**
      * Residual @p cell_residual and tangent @p cell_matrix (if @p
      * with_matrix; small-strain cells always) of @p cell at its dof values
-     * @p u, @p fe_values reinit'ed here. Returns false if the cell is
-     * inverted.
+     * @p u, @p fe_values reinit'ed here; with @p block also the tangent's
+     * displacement-pressure structure (mixed formulations). Returns false
+     * if the cell is inverted.
      */
     bool
     residual_and_tangent(const DoFHandler<3>::active_cell_iterator &cell,
@@ -63,7 +64,8 @@ namespace ssc
                          const Function<3>                         *body_force,
                          const bool                                 with_matrix,
                          FullMatrix<double>                        &cell_matrix,
-                         Vector<double> &cell_residual) const;
+                         Vector<double>    &cell_residual,
+                         CellPressureBlock *block = nullptr) const;
 
   private:
     const LayerMaterials &materials;

@@ -1,0 +1,35 @@
+#include <algorithm>
+
+#include <ssc/mechanics/cell_pressure_block.h>
+
+namespace ssc
+{
+  void
+  CellPressureBlock::augment()
+  {
+    const unsigned int n_p = mass.m(), n = coupling.n();
+    AssertDimension(pressure.m(), n_p);
+    AssertDimension(reduced.m(), n);
+    FullMatrix<double> mass_inverse(n_p, n_p), C_inverse(n_p, n_p);
+    mass_inverse.invert(mass);
+    C_inverse.invert(pressure);
+    // lambda_max(C M^{-1}) <= tr(C M^{-1}): gamma M^{-1} <= C^{-1} / 2
+    double trace = 0;
+    for (unsigned int a = 0; a < n_p; ++a)
+      for (unsigned int b = 0; b < n_p; ++b)
+        trace += pressure(a, b) * mass_inverse(b, a);
+    const double gamma = std::min(2. * shear_modulus, 0.5 / trace);
+
+    // K_0 += gamma B^T M^{-1} B
+    FullMatrix<double> M_inverse_B(n_p, n);
+    mass_inverse.mmult(M_inverse_B, coupling);
+    FullMatrix<double> volumetric(n, n);
+    coupling.Tmmult(volumetric, M_inverse_B);
+    reduced.add(gamma, volumetric);
+    // C = (C^{-1} - gamma M^{-1})^{-1}
+    C_inverse.add(-gamma, mass_inverse);
+    pressure.invert(C_inverse);
+    schur = pressure;
+    schur.add(1. / (2. * shear_modulus + gamma), mass);
+  }
+} // namespace ssc
