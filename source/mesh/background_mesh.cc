@@ -162,13 +162,17 @@ namespace ssc
     run_collectively(
       [this]() {
         // the thickness depends on (x, y) only: each column of vertices
-        // once
+        // once, and the edge midpoints and centres that a curved (Q2)
+        // mapping also places on the layer map
         std::set<std::pair<double, double>> columns;
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned())
             {
               for (const unsigned int v : cell->vertex_indices())
                 columns.emplace(cell->vertex(v)[0], cell->vertex(v)[1]);
+              for (const unsigned int l : cell->line_indices())
+                columns.emplace(cell->line(l)->center()[0],
+                                cell->line(l)->center()[1]);
               columns.emplace(cell->center()[0], cell->center()[1]);
             }
         for (const auto &[x, y] : columns)

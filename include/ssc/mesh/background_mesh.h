@@ -78,8 +78,10 @@ namespace ssc
     check_fitted_circle() const;
 
     /// Throws, naming the layer, unless every layer's thickness is in range
-    /// at the vertices and cell centres of the locally owned cells
-    /// (collective).
+    /// at the vertices, edge midpoints and cell centres of the locally
+    /// owned cells (collective): every point where the mapping evaluates
+    /// the layer map. A dip narrower than the cells between them is not in
+    /// the discrete model and is not seen.
     void
     check_thickness_at_vertices() const;
 
