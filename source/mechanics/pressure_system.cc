@@ -39,15 +39,12 @@ namespace ssc
     TrilinosWrappers::SparsityPattern    sparsity(owned, u_owned, communicator);
     const AffineConstraints<double>      none;
     std::vector<types::global_dof_index> dofs(
-      dof_handler.get_fe().n_dofs_per_cell()),
-      pressure(n_p);
+      dof_handler.get_fe().n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
-          for (unsigned int a = 0; a < n_p; ++a)
-            pressure[a] = offset + first_of_cell[cell->active_cell_index()] + a;
-          none.add_entries_local_to_global(pressure,
+          none.add_entries_local_to_global(pressure_indices(cell),
                                            constraints,
                                            dofs,
                                            sparsity);
@@ -74,18 +71,27 @@ namespace ssc
     AssertDimension(block.coupling.m(), n_p);
     AssertDimension(block.coupling.n(), dofs.size());
     const unsigned int first = first_of_cell[cell->active_cell_index()];
-    Assert(first != numbers::invalid_unsigned_int,
-           ExcMessage("A cell that this rank does not own."));
-    std::vector<types::global_dof_index> pressure(n_p);
-    for (unsigned int a = 0; a < n_p; ++a)
-      pressure[a] = offset + first + a;
     constraints.distribute_local_to_global(block.reduced, dofs, reduced);
     const AffineConstraints<double> none;
     none.distribute_local_to_global(
-      block.coupling, pressure, constraints, dofs, coupling);
+      block.coupling, pressure_indices(cell), constraints, dofs, coupling);
     pressure_blocks[first / n_p] = block.pressure;
     schur_inverses[first / n_p].reinit(n_p, n_p);
     schur_inverses[first / n_p].invert(block.schur);
+  }
+
+
+  std::vector<types::global_dof_index>
+  PressureSystem::pressure_indices(
+    const DoFHandler<3>::active_cell_iterator &cell) const
+  {
+    const unsigned int first = first_of_cell[cell->active_cell_index()];
+    Assert(first != numbers::invalid_unsigned_int,
+           ExcMessage("A cell that this rank does not own."));
+    std::vector<types::global_dof_index> indices(n_p);
+    for (unsigned int a = 0; a < n_p; ++a)
+      indices[a] = offset + first + a;
+    return indices;
   }
 
 

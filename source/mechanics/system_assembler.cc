@@ -116,14 +116,16 @@ namespace ssc
       }
     // the contributions (embedded septa, ligaments) belong to K_0: they
     // are what the cell matrix gains beyond the volume's
+    const bool contributions_to_reduced =
+      block != nullptr && !cell_contributions.empty();
     FullMatrix<double> volume_matrix;
-    if (block != nullptr)
+    if (contributions_to_reduced)
       volume_matrix = data.matrix;
     const Kinematics kinematics = kernel.material(cell).kinematics();
     for (const CellContribution *contribution : cell_contributions)
       contribution->add_to_cell(
         cell, scratch.u, kinematics, with_matrix, data.matrix, data.residual);
-    if (block != nullptr && !cell_contributions.empty())
+    if (contributions_to_reduced)
       {
         block->reduced.add(1., data.matrix);
         block->reduced.add(-1., volume_matrix);

@@ -94,6 +94,10 @@ namespace ssc
                         const TrilinosWrappers::MPI::Vector &src) const;
 
   private:
+    /// The global pressure indices of the locally owned @p cell.
+    std::vector<types::global_dof_index>
+    pressure_indices(const DoFHandler<3>::active_cell_iterator &cell) const;
+
     /// dst = blocks[cell] src cell by cell.
     void
     apply_blocks(const std::vector<FullMatrix<double>> &blocks,
