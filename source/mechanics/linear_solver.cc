@@ -142,17 +142,17 @@ namespace ssc
     /**
      * The block upper-triangular preconditioner [A B^T; 0 -S]^{-1} of the
      * saddle point: S^{-1} from the cells' Schur approximations, A^{-1}
-     * one AMG cycle on K_0. With exact A and S, GMRES would converge in
-     * two iterations.
+     * one AMG cycle on K_0 (or its Cholesky factor: exact). With exact A and S,
+     * GMRES would converge in two iterations.
      */
     class BlockTriangularPreconditioner
     {
     public:
       BlockTriangularPreconditioner(
-        const PressureSystem                    &system,
-        const TrilinosWrappers::PreconditionAMG &amg)
+        const PressureSystem                     &system,
+        const TrilinosWrappers::PreconditionBase &displacement)
         : system(system)
-        , amg(amg)
+        , displacement(displacement)
       {}
 
       void
@@ -164,13 +164,13 @@ namespace ssc
         scratch.reinit(src.block(0), true);
         system.coupling_matrix().Tvmult(scratch, dst.block(1));
         scratch.sadd(-1., 1., src.block(0));
-        amg.vmult(dst.block(0), scratch);
+        displacement.vmult(dst.block(0), scratch);
       }
 
     private:
-      const PressureSystem                    &system;
-      const TrilinosWrappers::PreconditionAMG &amg;
-      mutable TrilinosWrappers::MPI::Vector    scratch;
+      const PressureSystem                     &system;
+      const TrilinosWrappers::PreconditionBase &displacement;
+      mutable TrilinosWrappers::MPI::Vector     scratch;
     };
   } // namespace
 
@@ -183,13 +183,21 @@ namespace ssc
     , field(field)
     , constraints(constraints)
     , progress(progress)
-  {}
+  {
+    AssertThrow(parameters.preconditioner !=
+                    DisplacementPreconditioner::cholesky ||
+                  Utilities::MPI::n_mpi_processes(
+                    field.dof_handler().get_communicator()) == 1,
+                ExcMessage("Elasticity/Linear solver/Preconditioner = "
+                           "cholesky factorises the whole matrix on one "
+                           "process: run on one MPI rank, or use amg."));
+  }
 
 
   LinearSolver::~LinearSolver()
   {
     // The preconditioner references the near-null space: release it first.
-    preconditioner.clear();
+    amg.clear();
     near_null_space.reset();
   }
 
@@ -197,6 +205,36 @@ namespace ssc
   void
   LinearSolver::setup_preconditioner(
     const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    cholesky_active = false;
+    if (parameters.preconditioner == DisplacementPreconditioner::cholesky)
+      {
+        if (cholesky.initialize(matrix))
+          {
+            cholesky_active = true;
+            ++n_factorizations;
+            return;
+          }
+        if (progress != nullptr)
+          *progress << "  The tangent is not positive definite: AMG "
+                       "instead of its Cholesky factor"
+                    << std::endl;
+      }
+    setup_amg(matrix);
+  }
+
+
+  const TrilinosWrappers::PreconditionBase &
+  LinearSolver::active_preconditioner() const
+  {
+    if (cholesky_active)
+      return cholesky;
+    return amg;
+  }
+
+
+  void
+  LinearSolver::setup_amg(const TrilinosWrappers::SparseMatrix &matrix)
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -213,7 +251,7 @@ namespace ssc
 
     if (!parameters.rigid_body_modes)
       {
-        preconditioner.initialize(matrix, data);
+        amg.initialize(matrix, data);
         return;
       }
 
@@ -252,7 +290,7 @@ namespace ssc
     ml_list.set("null space: type", "pre-computed");
     ml_list.set("null space: dimension", near_null_space->NumVectors());
     ml_list.set("null space: vectors", near_null_space->Values());
-    preconditioner.initialize(matrix, ml_list);
+    amg.initialize(matrix, ml_list);
   }
 
 
@@ -275,14 +313,24 @@ namespace ssc
         solution_constraints.distribute(x);
         return LinearSolveReport();
       }
-    setup_preconditioner(matrix);
+    // A factor of an earlier matrix is used for a limited number of
+    // iterations; then the current matrix is factorised and the solve
+    // continues from where it stopped.
+    const bool reuse =
+      parameters.preconditioner == DisplacementPreconditioner::cholesky &&
+      cholesky_active && cholesky.factorized();
+    if (!reuse)
+      setup_preconditioner(matrix);
     solution_constraints.set_zero(x);
     const double tolerance =
       std::max(std::max(parameters.tolerance, target.relative_tolerance) *
                  rhs.l2_norm(),
                target.absolute_floor);
     LinearSolveReport report;
-    SolverControl     control(parameters.max_iterations,
+    SolverControl     control(reuse ?
+                            std::min(parameters.refactorization_iterations,
+                                     parameters.max_iterations) :
+                            parameters.max_iterations,
                           std::max(tolerance, 1e-300),
                           false,
                           false);
@@ -290,48 +338,19 @@ namespace ssc
       {
         try
           {
-            TrilinosWrappers::SolverCG    cg(control);
-            const MonitoredPreconditioner monitored(
-              preconditioner.trilinos_operator(), progress, "CG");
-            cg.solve(matrix.trilinos_matrix(), x, rhs, monitored);
+            run_krylov(matrix, x, rhs, control, solution_constraints);
           }
         catch (const SolverControl::NoConvergence &)
           {
-            throw;
-          }
-        catch (const ExceptionBase &)
-          {
-            // CG breaks down on an indefinite matrix (a finite-strain
-            // tangent past a stability limit): GMRES does not need
-            // definiteness
+            if (!reuse)
+              throw;
+            report.iterations = control.last_step();
+            setup_preconditioner(matrix);
+            control.set_max_steps(
+              parameters.max_iterations -
+              std::min(report.iterations, parameters.max_iterations - 1));
             solution_constraints.set_zero(x);
-            TrilinosWrappers::SolverGMRES gmres(
-              control,
-              TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
-            try
-              {
-                const MonitoredPreconditioner monitored(
-                  preconditioner.trilinos_operator(), progress, "GMRES");
-                gmres.solve(matrix.trilinos_matrix(), x, rhs, monitored);
-              }
-            catch (const SolverControl::NoConvergence &)
-              {
-                throw;
-              }
-            catch (const ExceptionBase &e)
-              {
-                std::ostringstream info;
-                e.print_info(info);
-                AssertThrow(false,
-                            ExcMessage(
-                              "The linear solver broke down (" +
-                              Utilities::trim(info.str()) +
-                              "): the system is singular or too badly "
-                              "conditioned to solve. Check the moduli and "
-                              "thicknesses (Layer stack/<layer>/Young's "
-                              "modulus, Poisson's ratio, Thickness) and the "
-                              "supports (Elasticity/Sides)."));
-              }
+            run_krylov(matrix, x, rhs, control, solution_constraints);
           }
       }
     catch (const SolverControl::NoConvergence &e)
@@ -341,9 +360,63 @@ namespace ssc
         check_unfinished(e, target, control.tolerance(), "CG");
       }
     solution_constraints.distribute(x);
-    report.iterations     = control.last_step();
+    report.iterations += control.last_step();
     report.final_residual = control.last_value();
     return report;
+  }
+
+
+  void
+  LinearSolver::run_krylov(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    TrilinosWrappers::MPI::Vector        &x,
+    const TrilinosWrappers::MPI::Vector  &rhs,
+    SolverControl                        &control,
+    const AffineConstraints<double>      &solution_constraints)
+  {
+    try
+      {
+        TrilinosWrappers::SolverCG    cg(control);
+        const MonitoredPreconditioner monitored(
+          active_preconditioner().trilinos_operator(), progress, "CG");
+        cg.solve(matrix.trilinos_matrix(), x, rhs, monitored);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        throw;
+      }
+    catch (const ExceptionBase &)
+      {
+        // CG breaks down on an indefinite matrix (a finite-strain tangent
+        // past a stability limit): GMRES does not need definiteness
+        solution_constraints.set_zero(x);
+        TrilinosWrappers::SolverGMRES gmres(
+          control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
+        try
+          {
+            const MonitoredPreconditioner monitored(
+              active_preconditioner().trilinos_operator(), progress, "GMRES");
+            gmres.solve(matrix.trilinos_matrix(), x, rhs, monitored);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            throw;
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream info;
+            e.print_info(info);
+            AssertThrow(false,
+                        ExcMessage(
+                          "The linear solver broke down (" +
+                          Utilities::trim(info.str()) +
+                          "): the system is singular or too badly "
+                          "conditioned to solve. Check the moduli and "
+                          "thicknesses (Layer stack/<layer>/Young's "
+                          "modulus, Poisson's ratio, Thickness) and the "
+                          "supports (Elasticity/Sides)."));
+          }
+      }
   }
 
 
@@ -401,10 +474,11 @@ namespace ssc
         bool unfinished = false;
         try
           {
-            fgmres.solve(SaddlePointOperator(system),
-                         solution,
-                         right_hand_side,
-                         BlockTriangularPreconditioner(system, preconditioner));
+            fgmres.solve(
+              SaddlePointOperator(system),
+              solution,
+              right_hand_side,
+              BlockTriangularPreconditioner(system, active_preconditioner()));
           }
         catch (const SolverControl::NoConvergence &e)
           {
@@ -478,7 +552,7 @@ namespace ssc
                target.absolute_floor);
     const TruncatedCGReport report = truncated_cg(
       matrix,
-      preconditioner,
+      active_preconditioner(),
       rhs,
       radius,
       tolerance,

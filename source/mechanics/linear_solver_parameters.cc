@@ -22,6 +22,26 @@ namespace ssc
       "the displacement system: exact whatever nu and contrast, its memory "
       "and time grow faster than linearly with the DoFs (small and "
       "medium problems). Trust-region steps always use CG with AMG.");
+    prm.add_parameter(
+      "Preconditioner",
+      preconditioner,
+      "amg: Trilinos ML smoothed-aggregation AMG with the rigid-body modes, "
+      "rebuilt for every matrix; its Krylov iterations grow with nu, the "
+      "layer contrast and the degree. cholesky: the sparse Cholesky factor "
+      "(CHOLMOD, supernodal, fill-reducing ordering) of a recent matrix, "
+      "kept across Newton iterations and load steps while the Krylov "
+      "solver needs at most Refactorization iterations with it, "
+      "refactorised otherwise: robust in nu, contrast and degree, its "
+      "memory and factorisation time grow faster than linearly with the "
+      "DoFs; one MPI rank only. A tangent that is not positive definite is "
+      "solved with amg.");
+    prm.add_parameter(
+      "Refactorization iterations",
+      refactorization_iterations,
+      "With Preconditioner = cholesky: a solve preconditioned by the factor "
+      "of an earlier matrix stops after this many iterations, the current "
+      "matrix is factorised and the solve continues with the new factor.",
+      Patterns::Integer(1, 10000));
     prm.add_parameter("Tolerance",
                       tolerance,
                       "CG stops when the residual has dropped by this factor "

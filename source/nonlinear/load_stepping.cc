@@ -38,12 +38,16 @@ namespace ssc
         const double next  = std::min(position + increment, to);
         const auto   start = problem.state();
         apply_load(next);
-        const NewtonReport result = newton.solve();
+        const bool         predicted = predict(start, position, next);
+        const NewtonReport result    = newton.solve();
         report.newton_iterations += result.iterations;
         report.linear_iterations += result.linear_iterations;
         if (result.converged)
           {
-            position = next;
+            last_change = problem.state();
+            last_change -= start;
+            last_load_increment = next - position;
+            position            = next;
             ++report.steps;
             report.last_residuals = result.residuals;
             if (newton.reports_iterations())
@@ -53,12 +57,13 @@ namespace ssc
               increment *= parameters.growth_factor;
             continue;
           }
-        // The first update of an increment solves with the tangent of the
-        // converged state and a right-hand side that scales with the
-        // increment: if CG fails on it, it fails on any smaller increment
-        // too (the absolute floors of its tolerance lie far below the
-        // smallest increment allowed), and cutting would only crawl.
-        AssertThrow(!(result.linear_failure_at_start &&
+        // Without a predictor, the first update of an increment solves
+        // with the tangent of the converged state and a right-hand side
+        // that scales with the increment: if CG fails on it, it fails on
+        // any smaller increment too (the absolute floors of its tolerance
+        // lie far below the smallest increment allowed), and cutting would
+        // only crawl.
+        AssertThrow(!(result.linear_failure_at_start && !predicted &&
                       dependence == LoadDependence::right_hand_side),
                     ExcMessage(
                       "Newton's method failed at load " +
@@ -84,5 +89,24 @@ namespace ssc
                                "solver/Minimum increment."));
       }
     return report;
+  }
+
+
+  bool
+  LoadStepper::predict(const NonlinearProblem::VectorType &converged,
+                       const double                        position,
+                       const double                        next)
+  {
+    if (newton.get_parameters().predictor != Predictor::extrapolation ||
+        last_load_increment <= 0.)
+      return false;
+    NonlinearProblem            &problem = newton.get_problem();
+    NonlinearProblem::VectorType guess   = converged;
+    guess.add((next - position) / last_load_increment, last_change);
+    problem.set_state(guess);
+    if (std::isfinite(problem.residual()))
+      return true;
+    problem.set_state(converged);
+    return false;
   }
 } // namespace ssc

@@ -84,6 +84,15 @@ namespace ssc
                       "Factor by which the increment grows after an easy "
                       "increment.",
                       Patterns::Double(1, 10));
+    prm.add_parameter(
+      "Predictor",
+      predictor,
+      "Where Newton's method starts an increment. none: at the last "
+      "converged state. extrapolation: at the last converged state plus "
+      "the last converged increment's change, scaled by the ratio of the "
+      "load increments (a secant predictor; dropped where it inverts a "
+      "cell). The first increment starts at the converged state either "
+      "way.");
     prm.add_parameter("Easy iterations",
                       easy_iterations,
                       "An increment that converged in at most this many "

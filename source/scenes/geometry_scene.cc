@@ -40,7 +40,6 @@ namespace ssc
     ConditionalOStream &pcout  = scene.pcout();
     TimerOutput        &timer  = scene.timer();
     RunOutput          &output = scene.output();
-    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
 
     BackgroundMesh mesh(parameters.layers, parameters.mesh, mpi_communicator);
     {

@@ -106,6 +106,8 @@ namespace ssc
                                      {"newton_iterations_per_step", newton},
                                      {"load_cuts_per_step", cuts},
                                      {"wall_time_per_step", times}};
+    if (system.factorizations() > 0)
+      solver["cholesky_factorizations"] = system.factorizations();
     if (!linear())
       solver["final_residuals_per_step"] = residuals;
     else

@@ -139,6 +139,14 @@ namespace ssc
     LinearSolveReport
     solve_linear();
 
+    /// Cholesky factorisations computed so far (Linear solver/
+    /// Preconditioner = cholesky; 0 otherwise).
+    unsigned int
+    factorizations() const
+    {
+      return linear_solver.factorizations();
+    }
+
     /**
      * Reaction force (N) on the dofs held by condition @p condition (see
      * BoundaryConstraints::setup()): the residual of the cells and dof

@@ -13,6 +13,7 @@
 #include <string>
 
 #include <ssc/mechanics/boundary_constraints.h>
+#include <ssc/mechanics/cholesky_preconditioner.h>
 #include <ssc/mechanics/displacement_field.h>
 #include <ssc/mechanics/linear_solver_parameters.h>
 #include <ssc/mechanics/pressure_system.h>
@@ -46,9 +47,9 @@ namespace ssc
    * CG with Trilinos ML smoothed-aggregation AMG on the displacement
    * system, the AMG fed with the six rigid-body modes (translations and
    * infinitesimal rotations at the dofs' support points) as near-null
-   * space; GMRES where CG breaks down on an indefinite tangent; the
-   * Steihaug-Toint truncated CG for trust-region steps with the same
-   * preconditioner.
+   * space, or with a reused sparse Cholesky factor; GMRES where CG breaks down
+   * on an indefinite tangent; the Steihaug-Toint truncated CG for trust-region
+   * steps with the same preconditioner.
    */
   class LinearSolver
   {
@@ -62,16 +63,26 @@ namespace ssc
                  ConditionalOStream           *progress = nullptr);
     ~LinearSolver();
 
-    /// Builds the AMG hierarchy for @p matrix.
+    /// Builds the preconditioner for @p matrix: its Cholesky factor with
+    /// Preconditioner = cholesky (AMG if it is not positive definite), the
+    /// AMG hierarchy otherwise.
     void
     setup_preconditioner(const TrilinosWrappers::SparseMatrix &matrix);
+
+    /// How many Cholesky factorisations were computed so far.
+    unsigned int
+    factorizations() const
+    {
+      return n_factorizations;
+    }
 
     /**
      * Solves @p matrix x = @p rhs from the initial guess @p x (its
      * constrained entries zeroed), to @p target, then distributes @p
      * constraints. At the iteration limit an error unless the residual is
      * below the target's acceptable residual. Sets up the preconditioner
-     * first.
+     * first; a Cholesky factor of an earlier matrix is reused for up to
+     * Refactorization iterations, then replaced by the current matrix's.
      */
     LinearSolveReport
     solve(const TrilinosWrappers::SparseMatrix &matrix,
@@ -112,6 +123,23 @@ namespace ssc
                  const bool                            new_preconditioner);
 
   private:
+    /// The AMG hierarchy for @p matrix.
+    void
+    setup_amg(const TrilinosWrappers::SparseMatrix &matrix);
+
+    /// The preconditioner set up last.
+    const TrilinosWrappers::PreconditionBase &
+    active_preconditioner() const;
+
+    /// CG on @p matrix x = @p rhs from @p x to @p control, GMRES where CG
+    /// breaks down (an indefinite tangent); NoConvergence at the limit.
+    void
+    run_krylov(const TrilinosWrappers::SparseMatrix &matrix,
+               TrilinosWrappers::MPI::Vector        &x,
+               const TrilinosWrappers::MPI::Vector  &rhs,
+               SolverControl                        &control,
+               const AffineConstraints<double>      &constraints);
+
     /// After a solve stopped by its iteration limit: an error unless its
     /// residual is still acceptable for @p target.
     static void
@@ -124,7 +152,10 @@ namespace ssc
     const DisplacementField            &field;
     const BoundaryConstraints          &constraints;
     ConditionalOStream                 *progress;
-    TrilinosWrappers::PreconditionAMG   preconditioner;
+    TrilinosWrappers::PreconditionAMG   amg;
+    CholeskyPreconditioner              cholesky;
+    bool                                cholesky_active  = false;
+    unsigned int                        n_factorizations = 0;
     std::unique_ptr<Epetra_MultiVector> near_null_space;
   };
 } // namespace ssc

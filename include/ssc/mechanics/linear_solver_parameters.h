@@ -28,17 +28,34 @@ namespace ssc
              {LinearSolverMethod::direct, "direct"}}};
   }
 
+  /// What preconditions the displacement system (the displacement block of
+  /// the block method).
+  enum class DisplacementPreconditioner
+  {
+    amg,
+    cholesky
+  };
+
+  constexpr std::array<std::pair<DisplacementPreconditioner, const char *>, 2>
+  enum_table(DisplacementPreconditioner)
+  {
+    return {{{DisplacementPreconditioner::amg, "amg"},
+             {DisplacementPreconditioner::cholesky, "cholesky"}}};
+  }
+
   /// Krylov solver and Trilinos ML smoothed-aggregation AMG (section
   /// "Elasticity/Linear solver").
   struct LinearSolverParameters
   {
-    LinearSolverMethod method                = LinearSolverMethod::cg;
-    double             tolerance             = 1e-8;
-    unsigned int       max_iterations        = 1000;
-    bool               rigid_body_modes      = true;
-    bool               smoothed_aggregation  = true;
-    double             aggregation_threshold = 1e-4;
-    unsigned int       smoother_sweeps       = 2;
+    LinearSolverMethod         method         = LinearSolverMethod::cg;
+    DisplacementPreconditioner preconditioner = DisplacementPreconditioner::amg;
+    unsigned int               refactorization_iterations = 20;
+    double                     tolerance                  = 1e-8;
+    unsigned int               max_iterations             = 1000;
+    bool                       rigid_body_modes           = true;
+    bool                       smoothed_aggregation       = true;
+    double                     aggregation_threshold      = 1e-4;
+    unsigned int               smoother_sweeps            = 2;
 
     /// Declares subsection "Linear solver" of the current section, bound
     /// to the members.

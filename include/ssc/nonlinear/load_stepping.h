@@ -39,7 +39,9 @@ namespace ssc
    * once it falls below Minimum increment of the whole path); easy
    * increments (at most Easy iterations) let it grow by Growth factor; more
    * than Max increments increments (converged or cut) are an error too, so
-   * that a solve crawling in tiny increments stops.
+   * that a solve crawling in tiny increments stops. Each increment starts
+   * from a secant predictor (Nonlinear solver/Predictor), the last
+   * converged increment scaled to this one, kept across calls of follow().
    */
   class LoadStepper
   {
@@ -66,7 +68,20 @@ namespace ssc
            const LoadDependence               dependence);
 
   private:
+    /// With Predictor = extrapolation: moves the state, at @p position
+    /// with the load of @p next applied, along the last converged
+    /// increment scaled to this one; undone if that inverts a cell.
+    /// Returns whether the state moved.
+    bool
+    predict(const NonlinearProblem::VectorType &converged,
+            const double                        position,
+            const double                        next);
+
     NewtonSolver &newton;
+    /// the change of the state over the last converged increment, and
+    /// that increment's load
+    NonlinearProblem::VectorType last_change;
+    double                       last_load_increment = 0.;
   };
 } // namespace ssc
 

@@ -57,6 +57,20 @@ namespace ssc
              {ForcingTerm::eisenstat_walker, "Eisenstat-Walker"}}};
   }
 
+  /// Where Newton's method starts an increment.
+  enum class Predictor
+  {
+    none,         ///< at the last converged state
+    extrapolation ///< the last converged increment, scaled to this one
+  };
+
+  constexpr std::array<std::pair<Predictor, const char *>, 2>
+  enum_table(Predictor)
+  {
+    return {
+      {{Predictor::none, "none"}, {Predictor::extrapolation, "extrapolation"}}};
+  }
+
   /// Newton's method and the adaptive load stepping around it (section
   /// "Nonlinear solver").
   struct NewtonParameters
@@ -71,6 +85,7 @@ namespace ssc
     double        minimum_increment       = 1e-4;
     unsigned int  max_increments          = 200;
     double        growth_factor           = 1.5;
+    Predictor     predictor               = Predictor::extrapolation;
     unsigned int  easy_iterations         = 4;
     unsigned int  continuation_iterations = 100;
     double        continuation_shift      = 0.1;

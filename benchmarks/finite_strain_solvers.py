@@ -1,0 +1,104 @@
+#!/usr/bin/python3
+"""Finite-strain indentation to 1.8 N: the AMG and the reused Cholesky
+preconditioner (Elasticity/Linear solver/Preconditioner), with and without
+the secant predictor of each load increment (Nonlinear solver/Predictor),
+run one after the other in this script on this machine.
+
+Cases:
+- hard: benchmarks/hard_cases.prm, reference case (8,262 DoFs, Q1 mixed,
+  neo-Hookean, microstructure, edge contact, bonded), one rank;
+- forearm: prm/forearm_indentation.prm at finite strain as in
+  benchmarks/large_deformation.py (Q1 mixed, 58,983 DoFs, neo-Hookean,
+  tension-field septa, tension-only ligaments, edge contact, bonded): AMG on
+  2 ranks against Cholesky on one rank (it factorises on one process).
+
+Records depth at 1.8 N, Newton and Krylov iterations, factorisations, the
+assembly and solve times and the wall time. Writes
+benchmarks/results/finite_strain_solvers.csv.
+
+    /usr/bin/python3 benchmarks/finite_strain_solvers.py [--cases hard forearm]
+"""
+import argparse, csv, json, os, subprocess, tempfile, time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
+                   "bin", "ssc")
+OUT = os.path.join(ROOT, "benchmarks", "results")
+LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
+FIELDS = ["case", "preconditioner", "predictor", "ranks", "dofs",
+          "depth_mm", "newton_iterations", "linear_iterations",
+          "factorizations", "t_assembly", "t_solve", "t_total", "wall_s",
+          "memory_MB"]
+FOREARM = ["Punch/Section=false", "Punch/Contact=bonded",
+           "Elasticity/Formulation=mixed", "Elasticity/Degree=1",
+           "Mesh/Region of interest/Local refinements=1",
+           "Embedded/Septa/Tension field=true",
+           "Embedded/Ligaments/Tension only=true",
+           "Punch/Edge contact=true"] + \
+    [f"Layer stack/{l}/Material model=neo-Hookean" for l in LAYERS]
+CASES = {"hard": (os.path.join(ROOT, "benchmarks", "hard_cases.prm"), []),
+         "forearm": (os.path.join(ROOT, "prm", "forearm_indentation.prm"),
+                     FOREARM)}
+
+
+def run(case, preconditioner, predictor, ranks, folder):
+    prm, settings = CASES[case]
+    name = f"{case}_{preconditioner}_{predictor}_{ranks}"
+    args = [SSC, prm, "-s", f"Run/Output directory={folder}",
+            "-s", f"Run/Name={name}", "-s", "Run/Write fields=false",
+            "-s", f"Elasticity/Linear solver/Preconditioner={preconditioner}",
+            "-s", f"Nonlinear solver/Predictor={predictor}"]
+    for s in settings:
+        args += ["-s", s]
+    if ranks > 1:
+        args = ["mpirun", "-np", str(ranks)] + args
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    start = time.time()
+    done = subprocess.run(args, capture_output=True, text=True, env=env,
+                          timeout=3600)
+    wall = time.time() - start
+    if done.returncode != 0:
+        print(f"{name} failed: {done.stderr.strip()[:300]}", flush=True)
+        return None
+    with open(os.path.join(folder, name, "summary.json")) as f:
+        s = json.load(f)
+    t, solver = s["timings"], s["solver"]
+    row = dict(case=case, preconditioner=preconditioner, predictor=predictor,
+               ranks=ranks, dofs=s["dofs"], depth_mm=s["depth_mm"][-1],
+               newton_iterations=solver["newton_iterations"],
+               linear_iterations=solver["linear_iterations"],
+               factorizations=solver.get("cholesky_factorizations", 0),
+               t_assembly=round(t["assembly"], 2),
+               t_solve=round(t["solve"], 2), t_total=round(t["total"], 2),
+               wall_s=round(wall, 1), memory_MB=round(s["memory_MB"]))
+    print(" ".join(f"{k}={row[k]}" for k in FIELDS), flush=True)
+    return row
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--cases", nargs="+", choices=list(CASES),
+                        default=list(CASES))
+    args = parser.parse_args()
+    plan = {"hard": [("amg", "none", 1), ("amg", "extrapolation", 1),
+                     ("cholesky", "none", 1),
+                     ("cholesky", "extrapolation", 1)],
+            "forearm": [("amg", "extrapolation", 2),
+                        ("cholesky", "extrapolation", 1)]}
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        for case in args.cases:
+            for preconditioner, predictor, ranks in plan[case]:
+                row = run(case, preconditioner, predictor, ranks, folder)
+                if row:
+                    rows.append(row)
+    with open(os.path.join(OUT, "finite_strain_solvers.csv"), "w",
+              newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=FIELDS)
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+if __name__ == "__main__":
+    main()
