@@ -15,33 +15,11 @@
 #include <map>
 #include <sstream>
 
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
-
+#include "punch_solver_cases.h"
 #include "tests.h"
 
 namespace
 {
-  double
-  stiffness(const std::vector<std::string> &settings, const std::string &name)
-  {
-    std::vector<std::string> overrides = {
-      "Elasticity/Linear solver/Tolerance=1e-12",
-      "Elasticity/Linear solver/Max iterations=5000",
-      "Punch/Profile length=0",
-      "Punch/Section=false",
-      "Run/Write fields=false",
-      "Nonlinear solver/Relative tolerance=1e-10",
-      "Run/Name=" + name};
-    overrides.insert(overrides.end(), settings.begin(), settings.end());
-    ssc::Parameters parameters;
-    parameters.read(SOURCE_DIR "/punch_small.prm", overrides);
-    const ssc::IndentationResult result =
-      ssc::IndentationScene(parameters, MPI_COMM_WORLD).run();
-    return result.forces.back() / result.depths.back();
-  }
-
-
   std::vector<std::string>
   with(std::vector<std::string> settings, const std::vector<std::string> &more)
   {
@@ -62,7 +40,7 @@ main(int argc, char **argv)
       std::string message;
       try
         {
-          stiffness({cholesky}, "refused");
+          punch_stiffness({cholesky}, "refused");
         }
       catch (const std::exception &e)
         {
@@ -77,56 +55,44 @@ main(int argc, char **argv)
       return 0;
     }
 
-  const std::map<std::string, std::vector<std::string>> discretisations = {
-    {"mixed Q1", {"Elasticity/Formulation=mixed"}},
-    {"enhanced Q1", {"Elasticity/Formulation=enhanced"}},
-    {"mixed Q2",
-     {"Elasticity/Formulation=mixed",
-      "Elasticity/Degree=2",
-      "Mesh/Region of interest/Local refinements=0"}}};
-  for (const auto &[label, settings] : discretisations)
-    for (const std::string nu : {"0.3", "0.4999"})
-      {
-        std::vector<std::string> case_settings = settings;
-        for (const std::string layer : {"skin", "fat", "muscle"})
-          case_settings.push_back("Layer stack/" + layer +
-                                  "/Poisson's ratio=" + nu);
-        const double direct =
-          stiffness(with(case_settings,
-                         {"Elasticity/Linear solver/Method=direct"}),
-                    "direct");
-        const double cg = stiffness(with(case_settings, {cholesky}), "cg");
-        const double block =
-          stiffness(with(case_settings,
-                         {cholesky, "Elasticity/Linear solver/Method=block"}),
-                    "block");
-        std::ostringstream line;
-        line << label << ", nu = " << nu << ": stiffness "
-             << std::setprecision(6) << direct
-             << " N/mm, cg and block with the Cholesky factor agree with "
-                "the direct solver to 1e-7: "
-             << (std::abs(cg / direct - 1) < 1e-7 &&
-                     std::abs(block / direct - 1) < 1e-7 ?
-                   "yes" :
-                   "no");
-        dealii::deallog << line.str() << std::endl;
-      }
+  for (const auto &[label, case_settings] : punch_solver_cases())
+    {
+      const double direct =
+        punch_stiffness(with(case_settings,
+                             {"Elasticity/Linear solver/Method=direct"}),
+                        "direct");
+      const double cg = punch_stiffness(with(case_settings, {cholesky}), "cg");
+      const double block =
+        punch_stiffness(with(case_settings,
+                             {cholesky,
+                              "Elasticity/Linear solver/Method=block"}),
+                        "block");
+      std::ostringstream line;
+      line << label << ": stiffness " << std::setprecision(6) << direct
+           << " N/mm, cg and block with the Cholesky factor agree with "
+              "the direct solver to 1e-7: "
+           << (std::abs(cg / direct - 1) < 1e-7 &&
+                   std::abs(block / direct - 1) < 1e-7 ?
+                 "yes" :
+                 "no");
+      dealii::deallog << line.str() << std::endl;
+    }
 
   std::vector<std::string> finite = {"Punch/Depth=0.5", "Punch/Load steps=4"};
   for (const std::string layer : {"skin", "fat", "muscle"})
     finite.push_back("Layer stack/" + layer + "/Material model=neo-Hookean");
   const double direct =
-    stiffness(with(finite, {"Elasticity/Linear solver/Method=direct"}),
-              "finite_direct");
+    punch_stiffness(with(finite, {"Elasticity/Linear solver/Method=direct"}),
+                    "finite_direct");
   for (const std::string limit : {"1000", "1"})
     {
       const double reused =
-        stiffness(with(finite,
-                       {cholesky,
-                        "Elasticity/Linear solver/Refactorization "
-                        "iterations=" +
-                          limit}),
-                  "finite_cholesky_" + limit);
+        punch_stiffness(with(finite,
+                             {cholesky,
+                              "Elasticity/Linear solver/Refactorization "
+                              "iterations=" +
+                                limit}),
+                        "finite_cholesky_" + limit);
       std::ostringstream line;
       line << "neo-Hookean, 0.5 mm, reuse limit " << limit
            << " iterations: force/depth " << std::setprecision(6) << direct
