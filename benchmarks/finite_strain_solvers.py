@@ -14,7 +14,8 @@ Cases:
 
 Records depth at 1.8 N, Newton and Krylov iterations, factorisations, the
 assembly and solve times and the wall time. Writes
-benchmarks/results/finite_strain_solvers.csv.
+benchmarks/results/finite_strain_solvers.csv (the rows of cases not run
+stay).
 
     /usr/bin/python3 benchmarks/finite_strain_solvers.py [--cases hard forearm]
 """
@@ -86,15 +87,20 @@ def main():
                      ("cholesky", "extrapolation", 1)],
             "forearm": [("amg", "extrapolation", 2),
                         ("cholesky", "extrapolation", 1)]}
+    path = os.path.join(OUT, "finite_strain_solvers.csv")
     rows = []
+    if os.path.exists(path):
+        # the rows of the cases not run now stay
+        with open(path) as f:
+            rows = [r for r in csv.DictReader(f)
+                    if r["case"] not in args.cases]
     with tempfile.TemporaryDirectory() as folder:
         for case in args.cases:
             for preconditioner, predictor, ranks in plan[case]:
                 row = run(case, preconditioner, predictor, ranks, folder)
                 if row:
                     rows.append(row)
-    with open(os.path.join(OUT, "finite_strain_solvers.csv"), "w",
-              newline="") as f:
+    with open(path, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=FIELDS)
         writer.writeheader()
         writer.writerows(rows)

@@ -318,7 +318,9 @@ namespace ssc
     // continues from where it stopped.
     const bool reuse =
       parameters.preconditioner == DisplacementPreconditioner::cholesky &&
-      cholesky_active && cholesky.factorized();
+      cholesky_active && cholesky.factorized() &&
+      cholesky.trilinos_operator().OperatorDomainMap().SameAs(
+        matrix.trilinos_matrix().DomainMap());
     if (!reuse)
       setup_preconditioner(matrix);
     solution_constraints.set_zero(x);
