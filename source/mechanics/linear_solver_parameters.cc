@@ -21,7 +21,8 @@ namespace ssc
       "direct: sparse LU factorisation (MUMPS through Trilinos Amesos) of "
       "the displacement system: exact whatever nu and contrast, its memory "
       "and time grow faster than linearly with the DoFs (small and "
-      "medium problems). Trust-region steps always use CG with AMG.");
+      "medium problems). Trust-region steps always use CG, with the "
+      "Preconditioner below.");
     prm.add_parameter(
       "Preconditioner",
       preconditioner,
