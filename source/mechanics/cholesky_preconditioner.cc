@@ -39,7 +39,8 @@ namespace ssc
     bool
     factorize(const Epetra_CrsMatrix &matrix)
     {
-      const int n = matrix.NumMyRows();
+      positive_definite = false; // until this factorisation succeeds
+      const int n       = matrix.NumMyRows();
       // lower triangle by columns = upper triangle by rows (symmetric)
       std::vector<int>    column_start(n + 1, 0), row;
       std::vector<double> value;
@@ -106,15 +107,6 @@ namespace ssc
     usable() const
     {
       return factor != nullptr && positive_definite;
-    }
-
-    std::size_t
-    memory_consumption() const
-    {
-      if (factor == nullptr)
-        return 0;
-      return static_cast<std::size_t>(common.lnz) *
-             (sizeof(double) + sizeof(int));
     }
 
     int
@@ -204,12 +196,13 @@ namespace ssc
   };
 
 
-  CholeskyPreconditioner::CholeskyPreconditioner() = default;
-
-
-  CholeskyPreconditioner::~CholeskyPreconditioner()
+  void
+  CholeskyPreconditioner::require_one_process(const MPI_Comm communicator)
   {
-    clear();
+    AssertThrow(Utilities::MPI::n_mpi_processes(communicator) == 1,
+                ExcMessage("Elasticity/Linear solver/Preconditioner = "
+                           "cholesky factorises the whole matrix on one "
+                           "process: run on one MPI rank, or use amg."));
   }
 
 
@@ -217,11 +210,7 @@ namespace ssc
   CholeskyPreconditioner::initialize(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
-    AssertThrow(Utilities::MPI::n_mpi_processes(
-                  matrix.get_mpi_communicator()) == 1,
-                ExcMessage("Elasticity/Linear solver/Preconditioner = "
-                           "cholesky factorises the whole matrix on one "
-                           "process: run on one MPI rank, or use amg."));
+    require_one_process(matrix.get_mpi_communicator());
     const Epetra_CrsMatrix &crs = matrix.trilinos_matrix();
     if (factorization == nullptr ||
         !factorization->OperatorDomainMap().SameAs(crs.RowMap()))
@@ -241,17 +230,4 @@ namespace ssc
   }
 
 
-  void
-  CholeskyPreconditioner::clear()
-  {
-    PreconditionBase::clear();
-    factorization.reset();
-  }
-
-
-  std::size_t
-  CholeskyPreconditioner::memory_consumption() const
-  {
-    return factorization ? factorization->memory_consumption() : 0;
-  }
 } // namespace ssc

@@ -22,7 +22,7 @@ namespace ssc
   namespace
   {
     /**
-     * The AMG preconditioner as AztecOO sees it, counting its applications
+     * The preconditioner as AztecOO sees it, counting its applications
      * (one per Krylov iteration) and reporting every 100th once the solve
      * has run for a few seconds: AztecOO itself has no iteration hook.
      */
@@ -71,7 +71,7 @@ namespace ssc
       const char *
       Label() const override
       {
-        return "ssc monitored AMG";
+        return "ssc monitored preconditioner";
       }
 
       bool
@@ -184,13 +184,10 @@ namespace ssc
     , constraints(constraints)
     , progress(progress)
   {
-    AssertThrow(parameters.preconditioner !=
-                    DisplacementPreconditioner::cholesky ||
-                  Utilities::MPI::n_mpi_processes(
-                    field.dof_handler().get_communicator()) == 1,
-                ExcMessage("Elasticity/Linear solver/Preconditioner = "
-                           "cholesky factorises the whole matrix on one "
-                           "process: run on one MPI rank, or use amg."));
+    // refused before any work is done, not at the first solve
+    if (parameters.preconditioner == DisplacementPreconditioner::cholesky)
+      CholeskyPreconditioner::require_one_process(
+        field.dof_handler().get_communicator());
   }
 
 
@@ -206,12 +203,11 @@ namespace ssc
   LinearSolver::setup_preconditioner(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
-    cholesky_active = false;
     if (parameters.preconditioner == DisplacementPreconditioner::cholesky)
       {
+        // a failed factorisation keeps no factor: AMG is then the active one
         if (cholesky.initialize(matrix))
           {
-            cholesky_active = true;
             ++n_factorizations;
             return;
           }
@@ -227,7 +223,7 @@ namespace ssc
   const TrilinosWrappers::PreconditionBase &
   LinearSolver::active_preconditioner() const
   {
-    if (cholesky_active)
+    if (cholesky.factorized())
       return cholesky;
     return amg;
   }
@@ -316,11 +312,9 @@ namespace ssc
     // A factor of an earlier matrix is used for a limited number of
     // iterations; then the current matrix is factorised and the solve
     // continues from where it stopped.
-    const bool reuse =
-      parameters.preconditioner == DisplacementPreconditioner::cholesky &&
-      cholesky_active && cholesky.factorized() &&
-      cholesky.trilinos_operator().OperatorDomainMap().SameAs(
-        matrix.trilinos_matrix().DomainMap());
+    const bool reuse = cholesky.factorized() &&
+                       cholesky.trilinos_operator().OperatorDomainMap().SameAs(
+                         matrix.trilinos_matrix().DomainMap());
     if (!reuse)
       setup_preconditioner(matrix);
     solution_constraints.set_zero(x);

@@ -25,8 +25,10 @@ namespace ssc
   class CholeskyPreconditioner : public TrilinosWrappers::PreconditionBase
   {
   public:
-    CholeskyPreconditioner();
-    ~CholeskyPreconditioner();
+    /// Throws, naming the parameter, unless @p communicator has one
+    /// process: the factorisation needs the whole matrix on one.
+    static void
+    require_one_process(const MPI_Comm communicator);
 
     /// Factorises @p matrix (its lower triangle). Returns false, and keeps
     /// no factor, if the matrix is not positive definite.
@@ -36,14 +38,6 @@ namespace ssc
     /// Whether a factor is there to apply.
     bool
     factorized() const;
-
-    /// Frees the factor and the symbolic analysis.
-    void
-    clear();
-
-    /// Memory of the factor (bytes).
-    std::size_t
-    memory_consumption() const;
 
   private:
     class Factorization;

@@ -148,13 +148,14 @@ namespace ssc
                      const double                        tolerance,
                      const std::string                  &solver);
 
-    const LinearSolverParameters       &parameters;
-    const DisplacementField            &field;
-    const BoundaryConstraints          &constraints;
-    ConditionalOStream                 *progress;
-    TrilinosWrappers::PreconditionAMG   amg;
+    const LinearSolverParameters     &parameters;
+    const DisplacementField          &field;
+    const BoundaryConstraints        &constraints;
+    ConditionalOStream               *progress;
+    TrilinosWrappers::PreconditionAMG amg;
+    /// factorised only with Preconditioner = cholesky; while it holds a
+    /// factor, that factor is the active preconditioner
     CholeskyPreconditioner              cholesky;
-    bool                                cholesky_active  = false;
     unsigned int                        n_factorizations = 0;
     std::unique_ptr<Epetra_MultiVector> near_null_space;
   };
