@@ -212,6 +212,13 @@ namespace ssc
   Parameters::check_consistency() const
   {
     layers.check_thickness_positive(mesh.patch_length_x, mesh.patch_length_y);
+    AssertThrow(mesh.layout != MeshLayout::o_grid ||
+                  mesh.o_grid_outer_boundary != OuterBoundary::circle ||
+                  elasticity.sides != SideCondition::roller,
+                ExcMessage("Elasticity/Sides = roller holds the normal "
+                           "displacement of the four sides of a rectangular "
+                           "patch; with Mesh/O-grid/Outer boundary = circle "
+                           "use Sides = fixed or free."));
     AssertThrow(!embedded.ligament_tension_only || layers.nonlinear(),
                 ExcMessage("Embedded/Ligaments/Tension only needs Newton's "
                            "method: give at least one layer a nonlinear "

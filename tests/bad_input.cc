@@ -239,6 +239,23 @@ main(int argc, char **argv)
   check("eight global refinements",
         valid_stack,
         {"-s", "Mesh/Global refinements=8"});
+  check("o-grid without its circle", valid_stack, {"-s", "Mesh/Layout=o-grid"});
+  check("o-grid with 30 cells around",
+        valid_stack,
+        {"-s",
+         "Mesh/Layout=o-grid",
+         "-s",
+         "Mesh/Fitted circle radius=2.5",
+         "-s",
+         "Mesh/O-grid/Cells around=30"});
+  check("o-grid on a circle with rollers",
+        valid_stack,
+        {"-s",
+         "Mesh/Layout=o-grid",
+         "-s",
+         "Mesh/Fitted circle radius=2.5",
+         "-s",
+         "Mesh/O-grid/Outer boundary=circle"});
   check("local refinements beyond the cell limit",
         std::string(valid_stack) +
           "subsection Run\n  set Output directory = results\nend\n"

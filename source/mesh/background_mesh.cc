@@ -11,6 +11,7 @@
 
 #include <ssc/base/collective_error.h>
 #include <ssc/mesh/background_mesh.h>
+#include <ssc/mesh/o_grid.h>
 
 namespace ssc
 {
@@ -62,13 +63,68 @@ namespace ssc
   }
 
 
+  std::vector<double>
+  BackgroundMesh::vertical_steps(const LayerStack     &layers,
+                                 const MeshParameters &parameters)
+  {
+    // per layer from the top, then listed from the bottom (zeta =
+    // -n_layers) to the top (zeta = 0) in the chart, where each layer has
+    // unit height
+    std::vector<std::vector<double>> per_layer;
+    const bool graded_from_surface = parameters.layout == MeshLayout::o_grid &&
+                                     parameters.o_grid_grade_in_depth;
+    double height = parameters.o_grid_edge_cell_size; // at the surface
+    for (unsigned int l = 0; l < layers.n_layers(); ++l)
+      {
+        const Layer        &layer = layers.layer(l);
+        std::vector<double> h;
+        if (graded_from_surface)
+          {
+            // heights continue the surface's geometric sequence; the last
+            // one is dropped if it overshoots by more than half, then the
+            // layer's steps are scaled to its thickness at the centre
+            const double thickness = layer.thickness(0, 0);
+            double       sum       = 0;
+            while (sum < thickness)
+              {
+                h.push_back(height);
+                sum += height;
+                height *= parameters.o_grid_radial_grading;
+              }
+            if (h.size() > 1 && sum - thickness > 0.5 * h.back())
+              {
+                sum -= h.back();
+                h.pop_back();
+                height /= parameters.o_grid_radial_grading;
+              }
+            if (h.size() < layer.n_cells_across)
+              h.assign(layer.n_cells_across, 1.);
+          }
+        else
+          for (unsigned int k = 0; k < layer.n_cells_across; ++k)
+            h.push_back(std::pow(layer.grading, k)); // k = 0 at the top
+        double sum = 0;
+        for (const double step : h)
+          sum += step;
+        for (double &step : h)
+          step /= sum;
+        per_layer.push_back(h);
+      }
+    std::vector<double> z_steps;
+    for (auto layer = per_layer.rbegin(); layer != per_layer.rend(); ++layer)
+      z_steps.insert(z_steps.end(), layer->rbegin(), layer->rend());
+    return z_steps;
+  }
+
+
   double
   BackgroundMesh::estimated_cells(const LayerStack     &layers,
                                   const MeshParameters &parameters)
   {
-    double across = 0;
-    for (unsigned int l = 0; l < layers.n_layers(); ++l)
-      across += layers.layer(l).n_cells_across;
+    const double across = vertical_steps(layers, parameters).size();
+    if (parameters.layout == MeshLayout::o_grid)
+      return static_cast<double>(OGrid(parameters).n_cells()) * across *
+             std::pow(8., parameters.global_refinements);
     const double lateral =
       static_cast<double>(graded_steps(parameters.patch_length_x,
                                        parameters.cell_size,
@@ -96,63 +152,129 @@ namespace ssc
                             "stack/<layer>/Cells across");
     const unsigned int n_layers = layers.n_layers();
 
-    // Vertical steps in the chart (each layer has unit height), listed from
-    // the bottom (zeta = -n_layers) to the top (zeta = 0).
-    std::vector<double> z_steps;
-    for (int l = n_layers - 1; l >= 0; --l)
-      {
-        const Layer        &layer = layers.layer(l);
-        std::vector<double> h(layer.n_cells_across);
-        double              sum = 0;
-        for (unsigned int k = 0; k < h.size(); ++k)
-          sum += (h[k] = std::pow(layer.grading, k)); // k = 0 at the top
-        for (auto it = h.rbegin(); it != h.rend(); ++it)
-          z_steps.push_back(*it / sum);
-      }
-
-    const std::vector<std::vector<double>> steps = {
-      graded_steps(parameters.patch_length_x,
-                   parameters.cell_size,
-                   parameters.core_half_width,
-                   parameters.grading_ratio),
-      graded_steps(parameters.patch_length_y,
-                   parameters.cell_size,
-                   parameters.core_half_width,
-                   parameters.grading_ratio),
-      z_steps};
+    const std::vector<double> z_steps = vertical_steps(layers, parameters);
 
     Triangulation<3> coarse;
-    GridGenerator::subdivided_hyper_rectangle(
-      coarse,
-      steps,
-      Point<3>(-parameters.patch_length_x / 2,
-               -parameters.patch_length_y / 2,
-               -static_cast<double>(n_layers)),
-      Point<3>(parameters.patch_length_x / 2, parameters.patch_length_y / 2, 0),
-      /*colorize=*/true);
+    if (parameters.layout == MeshLayout::box)
+      {
+        const std::vector<std::vector<double>> steps = {
+          graded_steps(parameters.patch_length_x,
+                       parameters.cell_size,
+                       parameters.core_half_width,
+                       parameters.grading_ratio),
+          graded_steps(parameters.patch_length_y,
+                       parameters.cell_size,
+                       parameters.core_half_width,
+                       parameters.grading_ratio),
+          z_steps};
+        GridGenerator::subdivided_hyper_rectangle(
+          coarse,
+          steps,
+          Point<3>(-parameters.patch_length_x / 2,
+                   -parameters.patch_length_y / 2,
+                   -static_cast<double>(n_layers)),
+          Point<3>(parameters.patch_length_x / 2,
+                   parameters.patch_length_y / 2,
+                   0),
+          /*colorize=*/true);
+      }
+    else
+      extrude_o_grid(z_steps, coarse);
 
     for (const auto &cell : coarse.active_cell_iterators())
       cell->set_material_id(std::min<unsigned int>(
         n_layers - 1,
         static_cast<unsigned int>(std::floor(-cell->center()[2]))));
 
-    const LayerManifold layer_map(
-      layers, DiskFittingMap(parameters.fitted_circle_radius));
+    // the o-grid's lateral coordinates are physical already
+    const LayerManifold layer_map(layers,
+                                  DiskFittingMap(
+                                    parameters.layout == MeshLayout::box ?
+                                      parameters.fitted_circle_radius :
+                                      0.));
     GridTools::transform(
       [&layer_map](const Point<3> &p) { return layer_map.push_forward(p); },
       coarse);
     coarse.set_all_manifold_ids(0);
+    if (parameters.layout == MeshLayout::o_grid)
+      set_polar_manifold_ids(coarse);
     // the same on every rank: the coarse mesh is whole on each
     for (const Point<3> &p : coarse.get_vertices())
       layers.check_thickness_at(p[0], p[1]);
 
     tria.copy_triangulation(coarse);
     tria.set_manifold(0, layer_map);
+    if (parameters.layout == MeshLayout::o_grid)
+      tria.set_manifold(1, LayerManifold::polar(layers));
     tria.refine_global(parameters.global_refinements);
     refine_region_of_interest();
     check_thickness_at_vertices();
     if (parameters.fitted_circle_radius > 0)
       check_fitted_circle();
+  }
+
+
+  void
+  BackgroundMesh::extrude_o_grid(const std::vector<double> &z_steps,
+                                 Triangulation<3>          &coarse) const
+  {
+    Triangulation<2> lateral;
+    OGrid(parameters).make(lateral);
+    std::vector<double> slices{-static_cast<double>(layers.n_layers())};
+    for (const double dz : z_steps)
+      slices.push_back(slices.back() + dz);
+    slices.back() = 0;
+    GridGenerator::extrude_triangulation(lateral, slices, coarse);
+
+    // boundary ids as the box's colorized ones: the lateral faces by the
+    // side of the patch their centre is closest to
+    const double hx = parameters.patch_length_x / 2,
+                 hy = parameters.patch_length_y / 2;
+    for (const auto &face : coarse.active_face_iterators())
+      if (face->at_boundary())
+        {
+          const Point<3> c = face->center();
+          if (std::abs(c[2]) < 1e-9)
+            face->set_boundary_id(BoundaryId::top);
+          else if (std::abs(c[2] - slices.front()) < 1e-9)
+            face->set_boundary_id(BoundaryId::bottom);
+          else if (std::abs(c[0]) / hx >= std::abs(c[1]) / hy)
+            face->set_boundary_id(c[0] < 0 ? BoundaryId::x_min :
+                                             BoundaryId::x_max);
+          else
+            face->set_boundary_id(c[1] < 0 ? BoundaryId::y_min :
+                                             BoundaryId::y_max);
+        }
+  }
+
+
+  void
+  BackgroundMesh::set_polar_manifold_ids(Triangulation<3> &coarse) const
+  {
+    const OGrid  o_grid(parameters);
+    const double r_min    = o_grid.inner_circle_radius() * (1. - 1e-9),
+                 r_max    = o_grid.outer_circle_radius() * (1. + 1e-9);
+    const auto on_circles = [r_min, r_max](const auto &object) {
+      for (const unsigned int v : object->vertex_indices())
+        {
+          const double r =
+            std::hypot(object->vertex(v)[0], object->vertex(v)[1]);
+          if (r < r_min || r > r_max)
+            return false;
+        }
+      return true;
+    };
+    for (const auto &cell : coarse.active_cell_iterators())
+      {
+        if (on_circles(cell))
+          cell->set_manifold_id(1);
+        for (const auto &face : cell->face_iterators())
+          if (on_circles(face))
+            face->set_manifold_id(1);
+        for (const unsigned int l : cell->line_indices())
+          if (on_circles(cell->line(l)))
+            cell->line(l)->set_manifold_id(1);
+      }
   }
 
 

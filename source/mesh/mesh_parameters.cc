@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <ssc/mesh/mesh_parameters.h>
 
@@ -11,6 +12,19 @@ namespace ssc
   MeshParameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
+    prm.add_parameter(
+      "Layout",
+      layout,
+      "How the lateral plane is meshed. box: a tensor-product grid of 'Cell "
+      "size', graded away from a central square ('Core half width', "
+      "'Grading ratio'), optionally fitted to a circle. o-grid: rings of "
+      "cells around the circle of 'Fitted circle radius' (a punch edge), "
+      "their radial size 'O-grid/Edge cell size' at the circle and growing "
+      "by 'O-grid/Radial grading' away from it (inwards and outwards), around "
+      "a small square core; the cells of the singular edge are then thin "
+      "radially and few around, as a peer's graded mesh has them. Cell size, "
+      "Core half width and Grading ratio are not used by the o-grid.",
+      Patterns::Selection(enum_names<MeshLayout>()));
     prm.add_parameter("Patch length x",
                       patch_length_x,
                       "Lateral extent of the patch in x, mm, centred at 0.",
@@ -51,6 +65,42 @@ namespace ssc
       "on a mesh line of the refined mesh (a multiple of the core cell size "
       "after refinement, measured from the patch centre).",
       Patterns::Double(0, 1e4));
+    prm.enter_subsection("O-grid");
+    prm.add_parameter("Cells around",
+                      o_grid_cells_around,
+                      "Number of cells around the circle (a multiple of 4; "
+                      "the square core has a quarter of them per side).",
+                      Patterns::Integer(8, 4096));
+    prm.add_parameter("Edge cell size",
+                      o_grid_edge_cell_size,
+                      "Radial size (mm) of the cells on either side of the "
+                      "circle.",
+                      Patterns::Double(0, 1e4));
+    prm.add_parameter("Radial grading",
+                      o_grid_radial_grading,
+                      "Ratio of successive radial cell sizes away from the "
+                      "circle; the size stops growing where it reaches the "
+                      "spacing of the cells around (cells then stay about "
+                      "square).",
+                      Patterns::Double(1, 3));
+    prm.add_parameter("Outer boundary",
+                      o_grid_outer_boundary,
+                      "Shape of the patch's lateral boundary: the square "
+                      "(rectangle) of the patch lengths, or the circle of "
+                      "diameter 'Patch length x' (an axisymmetric problem; "
+                      "needs equal patch lengths and Elasticity/Sides free or "
+                      "fixed).",
+                      Patterns::Selection(enum_names<OuterBoundary>()));
+    prm.add_parameter(
+      "Grade in depth",
+      o_grid_grade_in_depth,
+      "Whether the cell heights, too, start at 'Edge cell size' at the skin "
+      "surface and grow by 'Radial grading' with depth (each layer keeping "
+      "at least its 'Cells across'; the layers' 'Grading' is then not "
+      "used): the edge of a punch on the surface is singular in depth as "
+      "much as radially.",
+      Patterns::Bool());
+    prm.leave_subsection();
     prm.enter_subsection("Region of interest");
     prm.add_parameter("Ring radius",
                       roi_radius,
@@ -94,5 +144,25 @@ namespace ssc
                 ExcMessage("Mesh/Fitted circle radius: the fitted circle "
                            "and its blending zone (twice the radius) must "
                            "lie inside the patch."));
+    if (layout == MeshLayout::o_grid)
+      {
+        AssertThrow(fitted_circle_radius > 0,
+                    ExcMessage("Mesh/Layout = o-grid needs the circle its "
+                               "rings follow: set Mesh/Fitted circle radius "
+                               "> 0 (mm), e.g. the punch radius."));
+        AssertThrow(o_grid_cells_around % 4 == 0,
+                    ExcMessage("Mesh/O-grid/Cells around = " +
+                               std::to_string(o_grid_cells_around) +
+                               " must be a multiple of 4."));
+        AssertThrow(o_grid_edge_cell_size > 0 &&
+                      o_grid_edge_cell_size <= fitted_circle_radius,
+                    ExcMessage("Mesh/O-grid/Edge cell size must be positive "
+                               "and at most the Fitted circle radius."));
+        AssertThrow(o_grid_outer_boundary == OuterBoundary::square ||
+                      patch_length_x == patch_length_y,
+                    ExcMessage("Mesh/O-grid/Outer boundary = circle has the "
+                               "diameter Mesh/Patch length x, which must "
+                               "equal Patch length y."));
+      }
   }
 } // namespace ssc

@@ -69,7 +69,25 @@ namespace ssc
                  const double core_half_width,
                  const double ratio);
 
+    /// Cell heights through the stack in the chart (each layer of unit
+    /// height), from the bottom up: each layer's Cells across and Grading,
+    /// or, for an o-grid graded in depth, a geometric sequence from the
+    /// O-grid's Edge cell size at the skin surface.
+    static std::vector<double>
+    vertical_steps(const LayerStack &layers, const MeshParameters &parameters);
+
   private:
+    /// The o-grid (Mesh/Layout = o-grid) extruded through the chart's
+    /// vertical @p z_steps, with the box's boundary ids.
+    void
+    extrude_o_grid(const std::vector<double> &z_steps,
+                   Triangulation<3>          &coarse) const;
+
+    /// Manifold id 1 (the polar layer chart) for the cells, faces and lines
+    /// of the o-grid whose vertices all lie on its circles.
+    void
+    set_polar_manifold_ids(Triangulation<3> &coarse) const;
+
     void
     refine_region_of_interest();
 

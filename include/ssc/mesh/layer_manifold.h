@@ -20,12 +20,27 @@ namespace ssc
    *
    * Optionally the lateral coordinates first pass through a DiskFittingMap,
    * so that mesh lines follow a circle around the patch centre (a punch).
+   *
+   * The polar variant has the lateral chart (r, theta) instead of (x, y):
+   * the o-grid's rings use it, so that refinement puts new vertices on
+   * their circles.
    */
   class LayerManifold : public ChartManifold<3, 3, 3>
   {
   public:
+    /// Lateral chart coordinates.
+    enum class LateralChart
+    {
+      cartesian,
+      polar
+    };
+
     LayerManifold(const LayerStack     &layers,
                   const DiskFittingMap &disk_map = DiskFittingMap());
+
+    /// The chart (r, theta, zeta), theta periodic.
+    static LayerManifold
+    polar(const LayerStack &layers);
 
     std::unique_ptr<Manifold<3, 3>>
     clone() const override;
@@ -37,8 +52,13 @@ namespace ssc
     push_forward(const Point<3> &chart_point) const override;
 
   private:
+    LayerManifold(const LayerStack     &layers,
+                  const DiskFittingMap &disk_map,
+                  const LateralChart    lateral_chart);
+
     const LayerStack    &layers;
     const DiskFittingMap disk_map;
+    const LateralChart   lateral_chart;
   };
 } // namespace ssc
 

@@ -3,9 +3,41 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ssc/base/enum_table.h>
+
 namespace ssc
 {
   using namespace dealii;
+
+  /// How the lateral (x, y) plane is meshed.
+  enum class MeshLayout
+  {
+    /// A tensor-product grid, graded away from a central square.
+    box,
+    /// Rings of cells around a circle (a punch edge), graded radially
+    /// towards it, around a small square core (see OGrid).
+    o_grid
+  };
+
+  constexpr std::array<std::pair<MeshLayout, const char *>, 2>
+  enum_table(MeshLayout)
+  {
+    return {{{MeshLayout::box, "box"}, {MeshLayout::o_grid, "o-grid"}}};
+  }
+
+  /// Outer boundary of an o-grid patch.
+  enum class OuterBoundary
+  {
+    square,
+    circle
+  };
+
+  constexpr std::array<std::pair<OuterBoundary, const char *>, 2>
+  enum_table(OuterBoundary)
+  {
+    return {
+      {{OuterBoundary::square, "square"}, {OuterBoundary::circle, "circle"}}};
+  }
 
   /**
    * Parameters of the background hex mesh (section "Mesh"): the lateral
@@ -15,6 +47,7 @@ namespace ssc
    */
   struct MeshParameters
   {
+    MeshLayout   layout             = MeshLayout::box;
     double       patch_length_x     = 40;
     double       patch_length_y     = 40;
     double       cell_size          = 2;
@@ -24,6 +57,16 @@ namespace ssc
     /// Radius of the circle around the centre that mesh lines follow
     /// (0: none); see DiskFittingMap.
     double fitted_circle_radius = 0;
+
+    /// O-grid (layout o-grid): cells around the circle (a multiple of 4),
+    /// radial size of the cells at the circle, growth ratio of the radial
+    /// size away from it, the shape of the patch's outer boundary, and
+    /// whether cell heights grow the same way from the skin surface.
+    unsigned int  o_grid_cells_around   = 32;
+    double        o_grid_edge_cell_size = 0.2;
+    double        o_grid_radial_grading = 1.3;
+    OuterBoundary o_grid_outer_boundary = OuterBoundary::square;
+    bool          o_grid_grade_in_depth = true;
 
     /// Region of interest: a ring of radius roi_radius (0: a disk) around
     /// the patch centre at the skin surface, of width and depth roi_width.
