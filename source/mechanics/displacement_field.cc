@@ -23,11 +23,12 @@ namespace ssc
 {
   DisplacementField::DisplacementField(
     const parallel::distributed::Triangulation<3> &tria,
-    const unsigned int                             degree)
+    const unsigned int                             degree,
+    const unsigned int                             mapping_degree)
     : tria(tria)
     , mpi_communicator(tria.get_communicator())
     , finite_element(FE_Q<3>(degree), 3)
-    , linear_mapping(1)
+    , cell_mapping(mapping_degree)
     , dofs(tria)
   {}
 
@@ -85,7 +86,7 @@ namespace ssc
         std::vector<Point<3>> units;
         for (const unsigned int k : points)
           units.push_back(locations[k].unit_point);
-        FEValues<3> fe_values(linear_mapping,
+        FEValues<3> fe_values(cell_mapping,
                               finite_element,
                               Quadrature<3>(units),
                               update_values | update_gradients);
@@ -127,12 +128,12 @@ namespace ssc
     try
       {
         const auto cell_and_point =
-          GridTools::find_active_cell_around_point(linear_mapping, dofs, p);
+          GridTools::find_active_cell_around_point(cell_mapping, dofs, p);
         if (cell_and_point.first->is_locally_owned())
           {
             const Quadrature<3> q(
               GeometryInfo<3>::project_to_unit_cell(cell_and_point.second));
-            FEValues<3> fe_values(linear_mapping,
+            FEValues<3> fe_values(cell_mapping,
                                   finite_element,
                                   q,
                                   update_values);
@@ -162,7 +163,7 @@ namespace ssc
     const QGauss<3> quadrature(finite_element.degree + 2);
     Vector<float>   cell_errors(dofs.get_triangulation().n_active_cells());
     const auto      global_error = [&](const VectorTools::NormType norm) {
-      VectorTools::integrate_difference(linear_mapping,
+      VectorTools::integrate_difference(cell_mapping,
                                         dofs,
                                         ghosted_solution,
                                         exact_solution,
@@ -182,7 +183,7 @@ namespace ssc
   DisplacementField::describe(const TrilinosWrappers::MPI::Vector &du) const
   {
     std::map<types::global_dof_index, Point<3>> support_points;
-    DoFTools::map_dofs_to_support_points(linear_mapping, dofs, support_points);
+    DoFTools::map_dofs_to_support_points(cell_mapping, dofs, support_points);
     // over the nodes, w = |du|^2 at the node: sums of w, w r, w r^2, w z,
     // w z^2 and of the squares of the radial, hoop and vertical components
     std::vector<double> sums(8, 0.);

@@ -21,7 +21,9 @@ namespace ssc
     : parameters(parameters)
     , timer(timer)
     , layer_materials(layers)
-    , displacement(mesh.triangulation(), parameters.degree)
+    , displacement(mesh.triangulation(),
+                   parameters.degree,
+                   mesh.mapping_degree(parameters.degree))
     , boundary_constraints(displacement)
     , growth_field(QGauss<3>(parameters.degree + 1))
     , kernel(layer_materials, parameters, growth_field)

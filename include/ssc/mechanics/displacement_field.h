@@ -35,8 +35,12 @@ namespace ssc
   class DisplacementField
   {
   public:
+    /// Q@p degree displacements on @p tria, the cells mapped with
+    /// polynomials of @p mapping_degree (1: straight-edged; the degree
+    /// places its support points on the mesh's manifolds).
     DisplacementField(const parallel::distributed::Triangulation<3> &tria,
-                      const unsigned int                             degree);
+                      const unsigned int                             degree,
+                      const unsigned int mapping_degree = 1);
 
     /// Distributes the dofs and sizes the solution (zero).
     void
@@ -68,7 +72,7 @@ namespace ssc
     const MappingQ<3> &
     mapping() const
     {
-      return linear_mapping;
+      return cell_mapping;
     }
 
     const IndexSet &
@@ -132,7 +136,7 @@ namespace ssc
     const parallel::distributed::Triangulation<3> &tria;
     MPI_Comm                                       mpi_communicator;
     FESystem<3>                                    finite_element;
-    MappingQ<3>                                    linear_mapping;
+    MappingQ<3>                                    cell_mapping;
     DoFHandler<3>                                  dofs;
     IndexSet                                       owned_dofs;
     IndexSet                                       mesh_relevant;
