@@ -46,4 +46,25 @@ struct QuietElasticity
   ssc::ElasticSystem         elasticity;
 };
 
+/// The L2 and H1 errors of the solution on @p mesh with @p exact prescribed
+/// on its whole boundary: a patch test, when @p exact is a field every
+/// discretisation represents (a linear one).
+inline auto
+patch_test_errors(ssc::BackgroundMesh                        &mesh,
+                  const ssc::LayerStack                      &layers,
+                  ssc::ElasticityParameters                   parameters,
+                  const std::shared_ptr<dealii::Function<3>> &exact)
+{
+  parameters.linear_solver.tolerance = 1e-14;
+  QuietElasticity     quiet(mesh, layers, parameters);
+  ssc::ElasticSystem &elasticity = quiet.elasticity;
+  elasticity.field().distribute_dofs();
+  std::vector<ssc::DirichletCondition> conditions;
+  for (dealii::types::boundary_id id = 0; id < 6; ++id)
+    conditions.push_back({id, dealii::ComponentMask(3, true), exact, {}});
+  elasticity.setup(conditions);
+  elasticity.solve_linear();
+  return elasticity.field().errors(*exact);
+}
+
 #endif
