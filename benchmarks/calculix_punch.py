@@ -249,6 +249,15 @@ def richardson(values):
 # --------------------------------------------------------------------------
 # the force convention of axisymmetric elements
 # --------------------------------------------------------------------------
+def _quad8(nid, i, j):
+    """The 8 node ids of the quadratic quadrilateral whose lower-left corner
+    is node (i, j) of a grid with midside nodes (corners first,
+    counter-clockwise, then the midsides), as ccx's CAX8 wants them."""
+    return ", ".join(str(n) for n in (
+        nid(i, j), nid(i + 2, j), nid(i + 2, j + 2), nid(i, j + 2),
+        nid(i + 1, j), nid(i + 2, j + 1), nid(i + 1, j + 2), nid(i, j + 1)))
+
+
 def _axisymmetric_grid_input(r, z, element, material, boundary, prints):
     """An (r, z) tensor grid of 8-node quadrilaterals (corner coordinates r,
     z ascending; midside nodes at the midpoints), one material. boundary:
@@ -269,10 +278,7 @@ def _axisymmetric_grid_input(r, z, element, material, boundary, prints):
         for ii in range(len(r) - 1):
             i, j = 2 * ii, 2 * jj
             e += 1
-            L.append(f"{e}, " + ", ".join(str(n) for n in (
-                nid(i, j), nid(i + 2, j), nid(i + 2, j + 2), nid(i, j + 2),
-                nid(i + 1, j), nid(i + 2, j + 1), nid(i + 1, j + 2),
-                nid(i, j + 1))))
+            L.append(f"{e}, " + _quad8(nid, i, j))
     for name, where in prints.items():
         L.append(f"*NSET, NSET={name}")
         L += _lines(nid(i, j) for i, j in nodes if where(i, j))
@@ -438,10 +444,7 @@ def axisymmetric_input(nu, r, z, element="CAX8R"):
         for ii in range(len(r) - 1):
             i, j = 2 * ii, 2 * jj
             e += 1
-            L.append(f"{e}, " + ", ".join(str(n) for n in (
-                nid(i, j), nid(i + 2, j), nid(i + 2, j + 2), nid(i, j + 2),
-                nid(i + 1, j), nid(i + 2, j + 1), nid(i + 1, j + 2),
-                nid(i, j + 1))))
+            L.append(f"{e}, " + _quad8(nid, i, j))
             elsets[layer].append(e)
     for name, elements in elsets.items():
         L.append(f"*ELSET, ELSET={name}")
