@@ -1,0 +1,81 @@
+#ifndef ssc_identification_indentation_trials_h
+#define ssc_identification_indentation_trials_h
+
+#include <string>
+#include <vector>
+
+namespace ssc
+{
+  /**
+   * One in vivo probe indentation trial of the MULTIS study
+   * (data/multis/README.md): the layer thicknesses under the probe, the
+   * largest force and each layer's compression at that force, measured on
+   * ultrasound images. Units: mm, N, MPa.
+   */
+  struct IndentationTrial
+  {
+    /// Line of the data file (1 = the header), for messages.
+    unsigned int line = 0;
+    std::string  subject;
+    /// Site code, e.g. LA_A (lower arm, anterior).
+    std::string site;
+    std::string sex;
+
+    double skin_thickness   = 0;
+    double fat_thickness    = 0;
+    double muscle_thickness = 0;
+
+    /// Probe face area, mm^2 (MaxForce / maxForce_normArea).
+    double probe_area = 0;
+    double max_force  = 0;
+
+    /// Compressions at max_force over the unloaded thicknesses.
+    double skin_strain   = 0;
+    double fat_strain    = 0;
+    double muscle_strain = 0;
+
+    /// Slope of the force against the total displacement, N/mm.
+    double surface_stiffness = 0;
+
+    /// Skin surface to bone, mm.
+    double
+    total_thickness() const
+    {
+      return skin_thickness + fat_thickness + muscle_thickness;
+    }
+
+    /// The probe's travel at max_force: the sum of the layers'
+    /// compressions, mm.
+    double
+    displacement() const
+    {
+      return skin_strain * skin_thickness + fat_strain * fat_thickness +
+             muscle_strain * muscle_thickness;
+    }
+  };
+
+  /// The trials of a data file, and the lines skipped for lack of a
+  /// measurement.
+  struct IndentationData
+  {
+    std::vector<IndentationTrial> trials;
+    /// Lines with an empty (or nan) thickness, force or strain: the study
+    /// could not measure them (e.g. no bone on the image).
+    std::vector<unsigned int> incomplete_lines;
+  };
+
+  /**
+   * Reads the MULTIS per-trial table (comma separated, a header naming the
+   * columns; the columns ssc needs are found by name), keeping the trials
+   * of @p sites (all if empty). Throws with a message naming the file and
+   * line for a row whose field count differs from the header's, a value
+   * that is not a number, a non-positive thickness, force or probe area;
+   * naming the column for a header without one that ssc needs; and if no
+   * trial of @p sites remains.
+   */
+  IndentationData
+  read_indentation_trials(const std::string              &filename,
+                          const std::vector<std::string> &sites = {});
+} // namespace ssc
+
+#endif

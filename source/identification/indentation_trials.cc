@@ -1,0 +1,175 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <boost/algorithm/string.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <ssc/identification/indentation_trials.h>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::vector<std::string>
+    split_fields(const std::string &line)
+    {
+      std::vector<std::string> fields;
+      boost::split(fields, line, boost::is_any_of(","));
+      for (auto &field : fields)
+        boost::trim(field);
+      return fields;
+    }
+
+    bool
+    missing(const std::string &field)
+    {
+      return field.empty() || boost::iequals(field, "nan");
+    }
+
+    /// The number in @p field; throws naming the place if it is none.
+    double
+    number(const std::string &field,
+           const std::string &column,
+           const std::string &where)
+    {
+      std::size_t end   = 0;
+      double      value = 0;
+      try
+        {
+          value = std::stod(field, &end);
+        }
+      catch (const std::exception &)
+        {
+          end = 0;
+        }
+      AssertThrow(end == field.size() && end > 0 && std::isfinite(value),
+                  ExcMessage(where + ": column " + column + " is '" + field +
+                             "', not a number."));
+      return value;
+    }
+  } // namespace
+
+  IndentationData
+  read_indentation_trials(const std::string              &filename,
+                          const std::vector<std::string> &sites)
+  {
+    std::ifstream in(filename);
+    AssertThrow(in,
+                ExcMessage("Cannot open the indentation data file '" +
+                           filename + "'."));
+    std::string header_line;
+    AssertThrow(std::getline(in, header_line),
+                ExcMessage("The indentation data file '" + filename +
+                           "' is empty."));
+    const std::vector<std::string> header = split_fields(header_line);
+
+    // the columns used, by their names in the MULTIS table
+    const std::vector<std::string>      text_columns = {"SubID",
+                                                        "Location",
+                                                        "Gender"};
+    const std::vector<std::string>      measured     = {"Skin",
+                                                        "Fat",
+                                                        "Muscle",
+                                                        "MaxForce",
+                                                        "maxForce_normArea",
+                                                        "SkinStrain",
+                                                        "FatStrain",
+                                                        "MuscleStrain",
+                                                        "Total_Stiff"};
+    std::map<std::string, unsigned int> column;
+    for (const auto &name : text_columns)
+      column[name] = 0;
+    for (const auto &name : measured)
+      column[name] = 0;
+    for (auto &[name, index] : column)
+      {
+        const auto found = std::find(header.begin(), header.end(), name);
+        AssertThrow(found != header.end(),
+                    ExcMessage("The indentation data file '" + filename +
+                               "' has no column '" + name +
+                               "' (data/multis/README.md lists the columns "
+                               "ssc reads)."));
+        index = found - header.begin();
+      }
+
+    IndentationData data;
+    std::string     line;
+    for (unsigned int line_number = 2; std::getline(in, line); ++line_number)
+      {
+        if (boost::trim_copy(line).empty())
+          continue;
+        const std::string where =
+          filename + ", line " + std::to_string(line_number);
+        const std::vector<std::string> fields = split_fields(line);
+        AssertThrow(fields.size() == header.size(),
+                    ExcMessage(where + ": " + std::to_string(fields.size()) +
+                               " fields where the header has " +
+                               std::to_string(header.size()) + "."));
+        const auto field = [&](const std::string &name) -> const std::string & {
+          return fields[column.at(name)];
+        };
+        if (!sites.empty() &&
+            std::find(sites.begin(), sites.end(), field("Location")) ==
+              sites.end())
+          continue;
+        if (std::any_of(measured.begin(),
+                        measured.end(),
+                        [&](const std::string &name) {
+                          return missing(field(name));
+                        }))
+          {
+            data.incomplete_lines.push_back(line_number);
+            continue;
+          }
+        const auto value = [&](const std::string &name) {
+          return number(field(name), name, where);
+        };
+
+        IndentationTrial trial;
+        trial.line             = line_number;
+        trial.subject          = field("SubID");
+        trial.site             = field("Location");
+        trial.sex              = field("Gender");
+        trial.skin_thickness   = value("Skin");
+        trial.fat_thickness    = value("Fat");
+        trial.muscle_thickness = value("Muscle");
+        trial.max_force        = value("MaxForce");
+        const double pressure  = value("maxForce_normArea");
+        trial.skin_strain      = value("SkinStrain");
+        trial.fat_strain       = value("FatStrain");
+        trial.muscle_strain    = value("MuscleStrain");
+        for (const auto &[name, thickness] :
+             {std::make_pair("Skin", trial.skin_thickness),
+              std::make_pair("Fat", trial.fat_thickness),
+              std::make_pair("Muscle", trial.muscle_thickness)})
+          AssertThrow(thickness > 0,
+                      ExcMessage(where + ": the " + name +
+                                 " thickness must be positive (mm), not " +
+                                 field(name) + "."));
+        AssertThrow(trial.max_force > 0 && pressure > 0,
+                    ExcMessage(where + ": MaxForce and maxForce_normArea "
+                                       "must be positive."));
+        trial.probe_area        = trial.max_force / pressure;
+        trial.surface_stiffness = value("Total_Stiff") * trial.probe_area;
+        AssertThrow(trial.surface_stiffness > 0,
+                    ExcMessage(where + ": Total_Stiff must be positive."));
+        data.trials.push_back(trial);
+      }
+    std::string site_list;
+    for (const auto &site : sites)
+      site_list += (site_list.empty() ? "" : ", ") + site;
+    AssertThrow(
+      !data.trials.empty(),
+      ExcMessage(
+        "The indentation data file '" + filename + "' has no complete trial" +
+        (sites.empty() ? std::string() : " at the sites " + site_list) + "."));
+    return data;
+  }
+} // namespace ssc

@@ -1,0 +1,151 @@
+// Reading the MULTIS in vivo indentation table (data/multis):
+// - the shipped file: trials per site, the lines skipped for a missing
+//   measurement (8 rows without a muscle thickness), the probe areas
+//   (360 and 675 mm^2, the two transducer faces), and one trial's values
+//   checked against the relations the README states (the displacement is
+//   the sum of the layers' compressions, TotalStrain x Thickness);
+// - bad files, each giving one clear message naming the line or column:
+//   a row with a field too few, a value that is not a number, a negative
+//   thickness, a header without a column ssc needs, a site list that
+//   matches no trial, a file that does not exist.
+
+#include <boost/algorithm/string/trim.hpp>
+
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <ssc/identification/indentation_trials.h>
+
+#include "tests.h"
+
+using namespace dealii;
+
+namespace
+{
+  const std::string data_file =
+    SOURCE_DIR "/../data/multis/indentation_trials.csv";
+
+  /// Writes the shipped file's header and first data row, with @p edit
+  /// applied to that row, to @p name.
+  void
+  write_edited_copy(const std::string                        &name,
+                    const std::function<void(std::string &)> &edit_header,
+                    const std::function<void(std::string &)> &edit_row)
+  {
+    std::ifstream in(data_file);
+    std::string   header, row;
+    std::getline(in, header);
+    std::getline(in, row);
+    edit_header(header);
+    edit_row(row);
+    std::ofstream out(name);
+    out << header << '\n' << row << '\n';
+  }
+
+  void
+  expect_error(const std::string &label, const std::function<void()> &read)
+  {
+    try
+      {
+        read();
+        deallog << label << ": no error (wrong)" << std::endl;
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        std::string message = info.str();
+        boost::trim(message);
+        deallog << label << ": " << message << std::endl;
+      }
+  }
+
+  /// Replaces the @p index-th comma-separated field of @p row.
+  void
+  replace_field(std::string       &row,
+                const unsigned int index,
+                const std::string &value)
+  {
+    std::size_t begin = 0;
+    for (unsigned int i = 0; i < index; ++i)
+      begin = row.find(',', begin) + 1;
+    const std::size_t end = row.find(',', begin);
+    row.replace(begin, end - begin, value);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+
+  const ssc::IndentationData all = ssc::read_indentation_trials(data_file);
+  std::map<std::string, unsigned int> per_site;
+  std::set<long>                      areas;
+  for (const auto &trial : all.trials)
+    {
+      ++per_site[trial.site];
+      areas.insert(std::lround(trial.probe_area));
+    }
+  deallog << "complete trials: " << all.trials.size() << std::endl;
+  for (const auto &[site, n] : per_site)
+    deallog << "  " << site << ": " << n << std::endl;
+  deallog << "incomplete lines:";
+  for (const unsigned int line : all.incomplete_lines)
+    deallog << ' ' << line;
+  deallog << std::endl << "probe areas (mm^2):";
+  for (const long area : areas)
+    deallog << ' ' << area;
+  deallog << std::endl;
+
+  const ssc::IndentationData forearm =
+    ssc::read_indentation_trials(data_file, {"LA_A", "LA_P"});
+  const ssc::IndentationTrial &t = forearm.trials.front();
+  deallog << "first forearm trial: line " << t.line << ", subject " << t.subject
+          << ", " << t.site << ", " << t.sex << std::endl
+          << "  thicknesses " << t.skin_thickness << ' ' << t.fat_thickness
+          << ' ' << t.muscle_thickness << " mm, force " << t.max_force
+          << " N, area " << t.probe_area << " mm^2" << std::endl
+          << "  strains " << t.skin_strain << ' ' << t.fat_strain << ' '
+          << t.muscle_strain << ", displacement " << t.displacement()
+          << " mm, stiffness " << t.surface_stiffness << " N/mm" << std::endl;
+  // the table's TotalStrain (0.24308663682834242) times its Thickness
+  const double table_displacement = 0.24308663682834242 * t.total_thickness();
+  deallog << "  displacement - TotalStrain x Thickness: "
+          << (std::abs(t.displacement() - table_displacement) < 1e-9 ?
+                "below 1e-9 mm" :
+                "WRONG")
+          << std::endl;
+
+  const auto keep = [](std::string &) {};
+  write_edited_copy("field_too_few.csv", keep, [](std::string &row) {
+    row = row.substr(0, row.rfind(','));
+  });
+  expect_error("a field too few",
+               [] { ssc::read_indentation_trials("field_too_few.csv"); });
+  write_edited_copy("not_a_number.csv", keep, [](std::string &row) {
+    replace_field(row, 9, "3.9N");
+  });
+  expect_error("not a number",
+               [] { ssc::read_indentation_trials("not_a_number.csv"); });
+  write_edited_copy("negative_thickness.csv", keep, [](std::string &row) {
+    replace_field(row, 16, "-3.8");
+  });
+  expect_error("negative thickness",
+               [] { ssc::read_indentation_trials("negative_thickness.csv"); });
+  write_edited_copy(
+    "no_strain_column.csv",
+    [](std::string &header) { replace_field(header, 12, "Fat_Strain"); },
+    keep);
+  expect_error("header without FatStrain",
+               [] { ssc::read_indentation_trials("no_strain_column.csv"); });
+  write_edited_copy("one_trial.csv", keep, keep);
+  expect_error("unknown site",
+               [] { ssc::read_indentation_trials("one_trial.csv", {"XX_A"}); });
+  expect_error("missing file",
+               [] { ssc::read_indentation_trials("does_not_exist.csv"); });
+}
