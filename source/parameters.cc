@@ -277,11 +277,31 @@ namespace ssc
         const double smallest =
           std::min(mesh.patch_length_x, mesh.patch_length_y);
         std::ostringstream msg;
-        msg << "Punch/Radius = " << punch.radius << " mm: the punch (diameter "
-            << 2 * punch.radius << " mm) does not fit in the patch ("
-            << mesh.patch_length_x << " x " << mesh.patch_length_y
-            << " mm). Enlarge Mesh/Patch length x and y or shrink the punch.";
-        AssertThrow(2 * punch.radius < smallest, ExcMessage(msg.str()));
+        if (punch.shape == PunchShape::circle)
+          {
+            msg << "Punch/Radius = " << punch.radius
+                << " mm: the punch (diameter " << 2 * punch.radius
+                << " mm) does not fit in the patch (" << mesh.patch_length_x
+                << " x " << mesh.patch_length_y
+                << " mm). Enlarge Mesh/Patch length x and y or shrink the "
+                   "punch.";
+            AssertThrow(2 * punch.radius < smallest, ExcMessage(msg.str()));
+          }
+        else
+          {
+            // a face as large as the patch is allowed: confined compression
+            msg << "Punch/Length x Width = " << punch.length << " x "
+                << punch.width << " mm does not fit in the patch ("
+                << mesh.patch_length_x << " x " << mesh.patch_length_y
+                << " mm). Enlarge Mesh/Patch length x and y or shrink the "
+                   "punch.";
+            AssertThrow(punch.length <= mesh.patch_length_x * (1. + 1e-12) &&
+                          punch.width <= mesh.patch_length_y * (1. + 1e-12),
+                        ExcMessage(msg.str()));
+            AssertThrow(mesh.layout == MeshLayout::box,
+                        ExcMessage("Punch/Shape = rectangle needs Mesh/Layout "
+                                   "= box (the o-grid follows a circle)."));
+          }
         const double stack = layers.depth_of_interface(layers.n_layers(), 0, 0);
         std::ostringstream depth;
         depth << "Punch/Depth = " << punch.depth

@@ -256,6 +256,30 @@ main(int argc, char **argv)
          "Mesh/Fitted circle radius=2.5",
          "-s",
          "Mesh/O-grid/Outer boundary=circle"});
+  const std::vector<std::string> probe = {"-s",
+                                          "Punch/Shape=rectangle",
+                                          "-s",
+                                          "Punch/Length=45",
+                                          "-s",
+                                          "Punch/Width=8",
+                                          "-s",
+                                          "Mesh/Patch length x=80",
+                                          "-s",
+                                          "Run/Output directory=results"};
+  check("a rectangular probe whose edges cut through cells",
+        valid_stack,
+        probe);
+  std::vector<std::string> probe_on_o_grid = probe;
+  probe_on_o_grid.insert(
+    probe_on_o_grid.end(),
+    {"-s", "Mesh/Layout=o-grid", "-s", "Mesh/Fitted circle radius=2"});
+  check("a rectangular probe on an o-grid", valid_stack, probe_on_o_grid);
+  std::vector<std::string> probe_edge_contact = probe;
+  probe_edge_contact.insert(probe_edge_contact.end(),
+                            {"-s", "Punch/Edge contact=true"});
+  check("a rectangular probe with edge contact",
+        valid_stack,
+        probe_edge_contact);
   check("local refinements beyond the cell limit",
         std::string(valid_stack) +
           "subsection Run\n  set Output directory = results\nend\n"

@@ -133,7 +133,7 @@ namespace ssc
                             .size()) *
       graded_steps(parameters.patch_length_y,
                    parameters.cell_size,
-                   parameters.core_half_width,
+                   parameters.core_half_width_in(1),
                    parameters.grading_ratio)
         .size();
     return lateral * across * std::pow(8., parameters.global_refinements);
@@ -164,7 +164,7 @@ namespace ssc
                        parameters.grading_ratio),
           graded_steps(parameters.patch_length_y,
                        parameters.cell_size,
-                       parameters.core_half_width,
+                       parameters.core_half_width_in(1),
                        parameters.grading_ratio),
           z_steps};
         GridGenerator::subdivided_hyper_rectangle(

@@ -45,6 +45,13 @@ namespace ssc
                       "have the lateral 'Cell size'; outside it they grow by "
                       "'Grading ratio' per cell towards the patch edge.",
                       Patterns::Double(0, 1e4));
+    prm.add_parameter("Core half width y",
+                      core_half_width_y,
+                      "Half width (mm) of the core in y, if it differs from "
+                      "Core half width (a rectangular core, e.g. the edges "
+                      "of a rectangular probe: Punch/Shape = rectangle); 0: "
+                      "the same as Core half width.",
+                      Patterns::Double(0, 1e4));
     prm.add_parameter("Grading ratio",
                       grading_ratio,
                       "Growth ratio of the lateral cell size outside the "

@@ -56,11 +56,19 @@ namespace ssc
       profile_points(punch,
                      std::min(parameters.mesh.patch_length_x,
                               parameters.mesh.patch_length_y));
-    const auto                profile_locations = punch.profile_length > 0 ?
-                                                    locator.locate(profile_at) :
-                                                    std::vector<PointLocation>();
-    const std::vector<double> loads             = punch.loads();
-    std::vector<double>       depths, forces;
+    const auto profile_locations = punch.profile_length > 0 ?
+                                     locator.locate(profile_at) :
+                                     std::vector<PointLocation>();
+    // the layer interfaces on the punch's axis: each layer's compression
+    // under the punch centre, as an ultrasound image measures it
+    const LayerStack     &stack = parameters.layers;
+    std::vector<Point<3>> axis_points;
+    for (unsigned int k = 0; k <= stack.n_layers(); ++k)
+      axis_points.emplace_back(0, 0, -stack.depth_of_interface(k, 0, 0));
+    const auto axis_locations = locator.locate(axis_points);
+    std::vector<std::vector<double>> layer_strains;
+    const std::vector<double>        loads = punch.loads();
+    std::vector<double>              depths, forces;
     std::vector<std::vector<double>> profiles;
     std::vector<double>              contact_areas, contact_penetrations;
     double                           tie_balance = 0;
@@ -98,6 +106,13 @@ namespace ssc
         }
       forces.push_back(force);
       depths.push_back(depth);
+      const std::vector<double> u_axis =
+        vertical_displacements(axis_locations, system.field());
+      layer_strains.emplace_back();
+      for (unsigned int l = 0; l < stack.n_layers(); ++l)
+        layer_strains.back().push_back(
+          (u_axis[l + 1] - u_axis[l]) /
+          (axis_points[l][2] - axis_points[l + 1][2]));
       profiles.push_back(
         vertical_displacements(profile_locations, system.field()));
       if (run.write_fields)
@@ -108,6 +123,13 @@ namespace ssc
       const StepStatistics &statistics = driver.statistics().back();
       pcout << "Load step " << step + 1 << " of " << loads.size() << ": force "
             << std::setprecision(6) << force << " N, depth " << depth << " mm";
+      if (punch.shape == PunchShape::rectangle)
+        {
+          pcout << ", layer strains under the centre";
+          for (unsigned int l = 0; l < stack.n_layers(); ++l)
+            pcout << (l > 0 ? ", " : " ") << stack.layer(l).name << ' '
+                  << layer_strains.back()[l];
+        }
       if (!run.test_mode && !driver.linear())
         pcout << " (" << statistics.increments << " increments, "
               << statistics.cuts << " cut, " << statistics.newton_iterations
@@ -134,10 +156,12 @@ namespace ssc
 
     const double stiffness = forces.front() / depths.front();
     const Layer &top       = parameters.layers.layer(0);
-    const double reference = half_space_stiffness(punch.radius,
-                                                  top.youngs_modulus,
-                                                  top.poisson_ratio,
-                                                  punch.contact);
+    // a rectangle's reference: the disk of equal area
+    const double reference =
+      half_space_stiffness(std::sqrt(punch.area() / M_PI),
+                           top.youngs_modulus,
+                           top.poisson_ratio,
+                           punch.contact);
     pcout << "Stiffness: " << std::setprecision(6) << stiffness
           << " N/mm (half-space reference for the top layer's material: "
           << reference << " N/mm)" << std::endl;
@@ -163,11 +187,28 @@ namespace ssc
                                  {"area_mm2_per_step", contact_areas},
                                  {"max_penetration_mm_per_step",
                                   contact_penetrations}};
-    summary["punch_radius_mm"]               = punch.radius;
-    summary["force_N"]                       = forces;
-    summary["depth_mm"]                      = depths;
-    summary["stiffness_N_per_mm"]            = stiffness;
-    summary["half_space_stiffness_N_per_mm"] = reference;
+    summary["punch_shape"]    = to_string(punch.shape);
+    summary["punch_area_mm2"] = punch.area();
+    if (punch.shape == PunchShape::circle)
+      summary["punch_radius_mm"] = punch.radius;
+    else
+      {
+        summary["punch_length_mm"] = punch.length;
+        summary["punch_width_mm"]  = punch.width;
+      }
+    nlohmann::ordered_json strains;
+    for (unsigned int l = 0; l < stack.n_layers(); ++l)
+      {
+        std::vector<double> per_step;
+        for (const auto &step : layer_strains)
+          per_step.push_back(step[l]);
+        strains[stack.layer(l).name] = per_step;
+      }
+    summary["layer_strain_under_centre_per_step"] = strains;
+    summary["force_N"]                            = forces;
+    summary["depth_mm"]                           = depths;
+    summary["stiffness_N_per_mm"]                 = stiffness;
+    summary["half_space_stiffness_N_per_mm"]      = reference;
     if (loading.force_control() && driver.linear())
       summary["tie_force_balance_error_N"] = tie_balance;
     output.write_summary(summary);

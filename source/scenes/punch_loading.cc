@@ -1,5 +1,6 @@
 #include <deal.II/base/function.h>
 
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -18,21 +19,34 @@ namespace ssc
     TimerOutput::Scope     t(timer, "setup");
     const PunchParameters &punch    = parameters.punch;
     const double           a        = punch.radius;
-    const auto             on_punch = [a](const Point<3> &p) {
-      return std::hypot(p[0], p[1]) <= a * (1. + 1e-10);
+    const auto             on_punch = [punch](const Point<3> &p) {
+      return punch.covers(p);
     };
     // a punch between the surface nodes would hold nothing and report a
-    // zero force
-    unsigned int n_under = 0;
+    // zero force; a rectangle whose edges cut through cells would press
+    // on a smaller, jagged face
+    const bool          rectangle = punch.shape == PunchShape::rectangle;
+    unsigned int        n_under   = 0;
+    std::array<bool, 4> corner_found{};
     for (const auto &cell :
          system.field().dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() && face->boundary_id() == BoundaryId::top)
             for (const unsigned int v : face->vertex_indices())
-              n_under += on_punch(face->vertex(v));
-    if (Utilities::MPI::sum(
-          n_under, system.field().triangulation().get_communicator()) == 0)
+              {
+                const Point<3> &p = face->vertex(v);
+                n_under += on_punch(p);
+                for (unsigned int c = 0; c < 4; ++c)
+                  corner_found[c] =
+                    corner_found[c] ||
+                    (std::abs(std::abs(p[0]) - punch.length / 2) < 1e-9 &&
+                     std::abs(std::abs(p[1]) - punch.width / 2) < 1e-9 &&
+                     (p[0] > 0) == (c % 2 == 1) && (p[1] > 0) == (c / 2 == 1));
+              }
+    const MPI_Comm communicator =
+      system.field().triangulation().get_communicator();
+    if (Utilities::MPI::sum(n_under, communicator) == 0)
       {
         std::ostringstream message;
         message << "Punch/Radius = " << a
@@ -40,7 +54,22 @@ namespace ssc
                    "punch, so it would press on nothing. Refine the mesh "
                    "there (Mesh/Cell size, Mesh/Region of interest) or "
                    "enlarge the punch.";
-        AssertThrow(false, ExcMessage(message.str()));
+        AssertThrow(rectangle, ExcMessage(message.str()));
+      }
+    if (rectangle)
+      {
+        unsigned int n_corners = 0; // each found on some process
+        for (const bool found : corner_found)
+          n_corners +=
+            Utilities::MPI::max(static_cast<unsigned int>(found), communicator);
+        std::ostringstream message;
+        message << "Punch/Shape = rectangle: the corners (+-"
+                << punch.length / 2 << ", +-" << punch.width / 2
+                << ") of the probe's face are not all nodes of the skin "
+                   "surface, so its edges would cut through cells. Put mesh "
+                   "lines there: Mesh/Core half width = Length/2, Core half "
+                   "width y = Width/2 and Grading ratio > 1.";
+        AssertThrow(n_corners == 4, ExcMessage(message.str()));
       }
     std::vector<DirichletCondition> conditions =
       support_conditions(parameters.elasticity.sides);

@@ -1,10 +1,30 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <cmath>
+
 #include <ssc/scenes/punch_parameters.h>
 
 namespace ssc
 {
+  bool
+  PunchParameters::covers(const Point<3> &p) const
+  {
+    if (shape == PunchShape::circle)
+      return std::hypot(p[0], p[1]) <= radius * (1. + 1e-10);
+    return std::abs(p[0]) <= length / 2 * (1. + 1e-10) &&
+           std::abs(p[1]) <= width / 2 * (1. + 1e-10);
+  }
+
+
+  double
+  PunchParameters::area() const
+  {
+    return shape == PunchShape::circle ? M_PI * radius * radius :
+                                         length * width;
+  }
+
+
   std::vector<double>
   PunchParameters::loads() const
   {
@@ -21,10 +41,27 @@ namespace ssc
   PunchParameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Punch");
+    prm.add_parameter("Shape",
+                      shape,
+                      "circle: a flat cylindrical punch of radius Radius; "
+                      "rectangle: a flat face Length (along x) by Width "
+                      "(along y), such as an ultrasound probe's (the MULTIS "
+                      "probes: 45 x 8 and 45 x 15 mm, data/multis). A "
+                      "rectangle needs mesh lines along its edges (box "
+                      "layout; e.g. Mesh/Core half width = Length/2 and "
+                      "Core half width y = Width/2).");
     prm.add_parameter("Radius",
                       radius,
                       "Radius a of the rigid flat cylindrical punch, mm "
                       "(the forearm studies use a 5 mm diameter).",
+                      Patterns::Double(0));
+    prm.add_parameter("Length",
+                      length,
+                      "Length of a rectangular face along x, mm.",
+                      Patterns::Double(0));
+    prm.add_parameter("Width",
+                      width,
+                      "Width of a rectangular face along y, mm.",
                       Patterns::Double(0));
     prm.add_parameter("Contact",
                       contact,
@@ -102,6 +139,12 @@ namespace ssc
     AssertThrow(!edge_contact || contact_penalty > 0,
                 ExcMessage("Punch/Contact penalty must be positive."));
     AssertThrow(radius > 0, ExcMessage("Punch/Radius must be positive (mm)."));
+    AssertThrow(shape == PunchShape::circle || (length > 0 && width > 0),
+                ExcMessage("Punch/Length and Width must be positive (mm)."));
+    AssertThrow(shape == PunchShape::circle || !edge_contact,
+                ExcMessage("Punch/Edge contact models the rounded edge of a "
+                           "cylindrical punch: use it with Punch/Shape = "
+                           "circle."));
     if (control == PunchControl::force)
       {
         AssertThrow(!forces.empty(),

@@ -47,11 +47,13 @@ namespace ssc
    */
   struct MeshParameters
   {
-    MeshLayout   layout             = MeshLayout::box;
-    double       patch_length_x     = 40;
-    double       patch_length_y     = 40;
-    double       cell_size          = 2;
-    double       core_half_width    = 10;
+    MeshLayout layout          = MeshLayout::box;
+    double     patch_length_x  = 40;
+    double     patch_length_y  = 40;
+    double     cell_size       = 2;
+    double     core_half_width = 10;
+    /// 0: the same as core_half_width.
+    double       core_half_width_y  = 0;
     double       grading_ratio      = 1;
     unsigned int global_refinements = 0;
     /// Radius of the circle around the centre that mesh lines follow
@@ -76,6 +78,14 @@ namespace ssc
     unsigned int local_refinements = 0;
 
     /// Declares section "Mesh", bound to the members.
+    /// Half width (mm) of the core in direction @p d (0: x, 1: y).
+    double
+    core_half_width_in(const unsigned int d) const
+    {
+      return (d == 1 && core_half_width_y > 0) ? core_half_width_y :
+                                                 core_half_width;
+    }
+
     void
     add_parameters(ParameterHandler &prm);
 

@@ -2,6 +2,7 @@
 #define ssc_scenes_punch_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 
 #include <array>
 #include <vector>
@@ -41,10 +42,28 @@ namespace ssc
              {PunchControl::force, "force"}}};
   }
 
-  /// A rigid flat cylindrical punch at the patch centre (section "Punch").
+  /// The punch's flat face: a disk (the forearm indenters) or a rectangle
+  /// (the face of an ultrasound probe).
+  enum class PunchShape
+  {
+    circle,
+    rectangle
+  };
+
+  constexpr std::array<std::pair<PunchShape, const char *>, 2>
+  enum_table(PunchShape)
+  {
+    return {
+      {{PunchShape::circle, "circle"}, {PunchShape::rectangle, "rectangle"}}};
+  }
+
+  /// A rigid flat punch centred at the patch centre (section "Punch").
   struct PunchParameters
   {
+    PunchShape          shape          = PunchShape::circle;
     double              radius         = 2.5;
+    double              length         = 45;
+    double              width          = 8;
     PunchContact        contact        = PunchContact::bonded;
     PunchControl        control        = PunchControl::displacement;
     double              depth          = 0.5;
@@ -56,6 +75,15 @@ namespace ssc
     bool                edge_contact   = false;
     double              edge_radius    = 0.5;
     double              contact_penalty = 100;
+
+    /// Whether the point (x, y, .) lies on the punch's face (edges
+    /// included, to round-off).
+    bool
+    covers(const Point<3> &p) const;
+
+    /// The face's area, mm^2.
+    double
+    area() const;
 
     /// The loads of the steps: depths (mm) or forces (N).
     std::vector<double>
