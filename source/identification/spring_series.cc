@@ -1,0 +1,215 @@
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/householder.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include <ssc/identification/spring_series.h>
+
+namespace ssc
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::array<double, 3>
+    thicknesses(const IndentationTrial &trial)
+    {
+      return {
+        {trial.skin_thickness, trial.fat_thickness, trial.muscle_thickness}};
+    }
+
+    std::array<double, 3>
+    measured_strains(const IndentationTrial &trial)
+    {
+      return {{trial.skin_strain, trial.fat_strain, trial.muscle_strain}};
+    }
+
+    double
+    median(std::vector<double> values)
+    {
+      Assert(!values.empty(), ExcInternalError());
+      const std::size_t n = values.size();
+      std::nth_element(values.begin(), values.begin() + n / 2, values.end());
+      const double upper = values[n / 2];
+      if (n % 2 == 1)
+        return upper;
+      return 0.5 * (upper +
+                    *std::max_element(values.begin(), values.begin() + n / 2));
+    }
+
+    double
+    relative_error_pct(const double predicted, const double measured)
+    {
+      return 100. * std::abs(predicted - measured) / std::abs(measured);
+    }
+  } // namespace
+
+
+  SpringSeriesModel::SpringSeriesModel(const std::array<double, 3> &moduli)
+    : layer_moduli(moduli)
+  {
+    for (const double E : moduli)
+      AssertThrow(E > 0,
+                  ExcMessage("The springs' moduli must be positive (MPa)."));
+  }
+
+
+  SpringSeriesModel
+  SpringSeriesModel::fit_to_stiffness(
+    const std::vector<IndentationTrial> &trials)
+  {
+    AssertThrow(trials.size() >= 3,
+                ExcMessage("Fitting three layer moduli needs at least three "
+                           "trials, got " +
+                           std::to_string(trials.size()) + "."));
+    FullMatrix<double> design(trials.size(), 3);
+    Vector<double>     compliance_times_area(trials.size());
+    for (unsigned int j = 0; j < trials.size(); ++j)
+      {
+        const auto t = thicknesses(trials[j]);
+        for (unsigned int i = 0; i < 3; ++i)
+          design(j, i) = t[i];
+        compliance_times_area(j) =
+          trials[j].probe_area / trials[j].surface_stiffness;
+      }
+    Vector<double> layer_compliances(3);
+    Householder<double>(design).least_squares(layer_compliances,
+                                              compliance_times_area);
+    const char           *names[] = {"skin", "fat", "muscle"};
+    std::array<double, 3> moduli;
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        std::ostringstream message;
+        message << "Springs in series: the fitted compliance of the "
+                << names[i] << " layer is " << layer_compliances(i)
+                << " mm^2/N, not positive: these " << trials.size()
+                << " trials do not determine its modulus.";
+        AssertThrow(layer_compliances(i) > 0, ExcMessage(message.str()));
+        moduli[i] = 1. / layer_compliances(i);
+      }
+    return SpringSeriesModel(moduli);
+  }
+
+
+  SpringSeriesModel
+  SpringSeriesModel::fit_to_layer_strains(
+    const std::vector<IndentationTrial> &trials)
+  {
+    AssertThrow(!trials.empty(),
+                ExcMessage("Fitting the layer moduli needs trials."));
+    std::array<double, 3> strain_times_pressure{};
+    double                pressure_squared = 0;
+    for (const auto &trial : trials)
+      {
+        const double pressure = trial.max_force / trial.probe_area;
+        const auto   strains  = measured_strains(trial);
+        for (unsigned int i = 0; i < 3; ++i)
+          strain_times_pressure[i] += strains[i] * pressure;
+        pressure_squared += pressure * pressure;
+      }
+    const char           *names[] = {"skin", "fat", "muscle"};
+    std::array<double, 3> moduli;
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        AssertThrow(strain_times_pressure[i] > 0,
+                    ExcMessage(std::string("Springs in series: the ") +
+                               names[i] +
+                               " layer's strains do not grow with the "
+                               "pressure in these trials; its modulus is "
+                               "undetermined."));
+        moduli[i] = pressure_squared / strain_times_pressure[i];
+      }
+    return SpringSeriesModel(moduli);
+  }
+
+
+  double
+  SpringSeriesModel::stiffness(const IndentationTrial &trial) const
+  {
+    const auto t          = thicknesses(trial);
+    double     compliance = 0; // mm per MPa of pressure
+    for (unsigned int i = 0; i < 3; ++i)
+      compliance += t[i] / layer_moduli[i];
+    return trial.probe_area / compliance;
+  }
+
+
+  std::array<double, 3>
+  SpringSeriesModel::layer_strains(const IndentationTrial &trial) const
+  {
+    const double          pressure = trial.max_force / trial.probe_area;
+    std::array<double, 3> strains;
+    for (unsigned int i = 0; i < 3; ++i)
+      strains[i] = pressure / layer_moduli[i];
+    return strains;
+  }
+
+
+  TrialSplit
+  split_by_subject(const std::vector<IndentationTrial> &trials,
+                   const double                         training_fraction,
+                   const unsigned int                   seed)
+  {
+    AssertThrow(training_fraction > 0 && training_fraction < 1,
+                ExcMessage("The training fraction must lie strictly between "
+                           "0 and 1."));
+    std::set<std::string> subject_set;
+    for (const auto &trial : trials)
+      subject_set.insert(trial.subject);
+    std::vector<std::string> subjects(subject_set.begin(), subject_set.end());
+    // Fisher-Yates on the generator's raw output: std::shuffle and the
+    // standard distributions differ between library implementations
+    std::mt19937 generator(seed);
+    for (std::size_t i = subjects.size(); i > 1; --i)
+      std::swap(subjects[i - 1], subjects[generator() % i]);
+    const std::size_t n_training =
+      std::lround(training_fraction * subjects.size());
+    AssertThrow(n_training >= 1 && n_training < subjects.size(),
+                ExcMessage("A training fraction of " +
+                           std::to_string(training_fraction) + " of " +
+                           std::to_string(subjects.size()) +
+                           " subjects leaves one of the two sets empty."));
+    const std::set<std::string> training(subjects.begin(),
+                                         subjects.begin() + n_training);
+    TrialSplit                  split;
+    for (const auto &trial : trials)
+      (training.count(trial.subject) ? split.training : split.held_out)
+        .push_back(trial);
+    return split;
+  }
+
+
+  PredictionErrors
+  prediction_errors(const SpringSeriesModel             &model,
+                    const std::vector<IndentationTrial> &trials)
+  {
+    std::vector<double>                stiffness, pooled;
+    std::array<std::vector<double>, 3> per_layer;
+    for (const auto &trial : trials)
+      {
+        stiffness.push_back(
+          relative_error_pct(model.stiffness(trial), trial.surface_stiffness));
+        const auto predicted = model.layer_strains(trial);
+        const auto measured  = measured_strains(trial);
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            per_layer[i].push_back(
+              relative_error_pct(predicted[i], measured[i]));
+            pooled.push_back(per_layer[i].back());
+          }
+      }
+    PredictionErrors errors;
+    errors.stiffness_pct = median(stiffness);
+    for (unsigned int i = 0; i < 3; ++i)
+      errors.layer_strain_pct[i] = median(per_layer[i]);
+    errors.pooled_layer_strain_pct = median(pooled);
+    return errors;
+  }
+} // namespace ssc
