@@ -244,6 +244,16 @@ namespace ssc
                                to_string(layers.layer(l).model) +
                                ": use mixed or mean dilatation with "
                                "finite-strain layers."));
+    if (mesh.symmetry == MeshSymmetry::quarter)
+      AssertThrow(mesh.layout == MeshLayout::box &&
+                    run.scene == SceneKind::indentation &&
+                    !microstructure.lobules && !microstructure.ligaments &&
+                    !punch.edge_contact,
+                  ExcMessage("Mesh/Symmetry = quarter needs a problem "
+                             "symmetric about the planes x = 0 and y = 0: "
+                             "the indentation scene on the box layout, "
+                             "without Microstructure/Lobules or Ligaments "
+                             "and without Punch/Edge contact."));
     AssertThrow(!punch.edge_contact || layers.nonlinear(),
                 ExcMessage("Punch/Edge contact needs Newton's method: give "
                            "at least one layer a nonlinear Material model "

@@ -280,6 +280,9 @@ main(int argc, char **argv)
   check("a rectangular probe with edge contact",
         valid_stack,
         probe_edge_contact);
+  check("a quarter model with lobules",
+        valid_stack,
+        {"-s", "Mesh/Symmetry=quarter", "-s", "Microstructure/Lobules=true"});
   check("local refinements beyond the cell limit",
         std::string(valid_stack) +
           "subsection Run\n  set Output directory = results\nend\n"

@@ -4,6 +4,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -31,7 +32,8 @@ namespace ssc
   BackgroundMesh::graded_steps(const double L,
                                const double h,
                                const double core_half_width,
-                               const double ratio)
+                               const double ratio,
+                               const double edge_size)
   {
     const double half = L / 2;
     if (ratio <= 1. + 1e-12 || core_half_width >= half)
@@ -40,12 +42,39 @@ namespace ssc
         return std::vector<double>(n, L / n);
       }
     // one half, from the centre outwards
-    const unsigned int n_core =
-      std::max(1., std::ceil(core_half_width / h - 1e-10));
-    std::vector<double> half_steps(n_core, core_half_width / n_core);
+    std::vector<double> half_steps;
+    if (edge_size > 0)
+      {
+        // from the core's edge inwards: growing from edge_size, at most h;
+        // the last one dropped if it overshoots by more than half, then
+        // scaled to the core
+        double size = edge_size, sum = 0;
+        while (sum < core_half_width - 1e-10 * L)
+          {
+            half_steps.push_back(size);
+            sum += size;
+            size = std::min(h, size * ratio);
+          }
+        if (half_steps.size() > 1 &&
+            sum - core_half_width > 0.5 * half_steps.back())
+          {
+            sum -= half_steps.back();
+            half_steps.pop_back();
+          }
+        for (double &step : half_steps)
+          step *= core_half_width / sum;
+        std::reverse(half_steps.begin(), half_steps.end());
+      }
+    else
+      {
+        const unsigned int n_core =
+          std::max(1., std::ceil(core_half_width / h - 1e-10));
+        half_steps.assign(n_core, core_half_width / n_core);
+      }
     const double        remaining = half - core_half_width;
     std::vector<double> graded;
-    double              size = core_half_width / n_core, sum = 0;
+    double size = edge_size > 0 ? edge_size / ratio : half_steps.back();
+    double sum  = 0;
     while (sum < remaining - 1e-10 * L)
       {
         size *= ratio;
@@ -64,6 +93,31 @@ namespace ssc
 
 
   std::vector<double>
+  BackgroundMesh::lateral_steps(const MeshParameters &parameters,
+                                const unsigned int    direction)
+  {
+    std::vector<double> steps =
+      graded_steps(direction == 0 ? parameters.patch_length_x :
+                                    parameters.patch_length_y,
+                   parameters.cell_size,
+                   parameters.core_half_width_in(direction),
+                   parameters.grading_ratio,
+                   parameters.core_edge_cell_size);
+    if (parameters.symmetry == MeshSymmetry::quarter)
+      {
+        // the steps are symmetric about the centre; an odd count has a
+        // cell across it, which is split in two
+        const std::size_t   n = steps.size();
+        std::vector<double> half(steps.begin() + n / 2, steps.end());
+        if (n % 2 == 1)
+          half.front() /= 2;
+        steps = half;
+      }
+    return steps;
+  }
+
+
+  std::vector<double>
   BackgroundMesh::vertical_steps(const LayerStack     &layers,
                                  const MeshParameters &parameters)
   {
@@ -71,9 +125,15 @@ namespace ssc
     // -n_layers) to the top (zeta = 0) in the chart, where each layer has
     // unit height
     std::vector<std::vector<double>> per_layer;
-    const bool graded_from_surface = parameters.layout == MeshLayout::o_grid &&
-                                     parameters.o_grid_grade_in_depth;
-    double height = parameters.o_grid_edge_cell_size; // at the surface
+    const bool o_grid              = parameters.layout == MeshLayout::o_grid;
+    const bool graded_from_surface = o_grid ?
+                                       parameters.o_grid_grade_in_depth :
+                                       parameters.core_edge_cell_size > 0;
+    // at the surface, and its growth ratio
+    double       height = o_grid ? parameters.o_grid_edge_cell_size :
+                                   parameters.core_edge_cell_size;
+    const double ratio =
+      o_grid ? parameters.o_grid_radial_grading : parameters.grading_ratio;
     for (unsigned int l = 0; l < layers.n_layers(); ++l)
       {
         const Layer        &layer = layers.layer(l);
@@ -89,13 +149,13 @@ namespace ssc
               {
                 h.push_back(height);
                 sum += height;
-                height *= parameters.o_grid_radial_grading;
+                height *= ratio;
               }
             if (h.size() > 1 && sum - thickness > 0.5 * h.back())
               {
                 sum -= h.back();
                 h.pop_back();
-                height /= parameters.o_grid_radial_grading;
+                height /= ratio;
               }
             if (h.size() < layer.n_cells_across)
               h.assign(layer.n_cells_across, 1.);
@@ -126,16 +186,8 @@ namespace ssc
       return static_cast<double>(OGrid(parameters).n_cells()) * across *
              std::pow(8., parameters.global_refinements);
     const double lateral =
-      static_cast<double>(graded_steps(parameters.patch_length_x,
-                                       parameters.cell_size,
-                                       parameters.core_half_width,
-                                       parameters.grading_ratio)
-                            .size()) *
-      graded_steps(parameters.patch_length_y,
-                   parameters.cell_size,
-                   parameters.core_half_width_in(1),
-                   parameters.grading_ratio)
-        .size();
+      static_cast<double>(lateral_steps(parameters, 0).size()) *
+      lateral_steps(parameters, 1).size();
     return lateral * across * std::pow(8., parameters.global_refinements);
   }
 
@@ -158,20 +210,13 @@ namespace ssc
     if (parameters.layout == MeshLayout::box)
       {
         const std::vector<std::vector<double>> steps = {
-          graded_steps(parameters.patch_length_x,
-                       parameters.cell_size,
-                       parameters.core_half_width,
-                       parameters.grading_ratio),
-          graded_steps(parameters.patch_length_y,
-                       parameters.cell_size,
-                       parameters.core_half_width_in(1),
-                       parameters.grading_ratio),
-          z_steps};
+          lateral_steps(parameters, 0), lateral_steps(parameters, 1), z_steps};
+        const bool quarter = parameters.symmetry == MeshSymmetry::quarter;
         GridGenerator::subdivided_hyper_rectangle(
           coarse,
           steps,
-          Point<3>(-parameters.patch_length_x / 2,
-                   -parameters.patch_length_y / 2,
+          Point<3>(quarter ? 0. : -parameters.patch_length_x / 2,
+                   quarter ? 0. : -parameters.patch_length_y / 2,
                    -static_cast<double>(n_layers)),
           Point<3>(parameters.patch_length_x / 2,
                    parameters.patch_length_y / 2,
@@ -319,7 +364,7 @@ namespace ssc
               ++found;
           }
     found = Utilities::MPI::sum(found, tria.get_communicator());
-    if (found >= 8)
+    if (found >= (parameters.symmetry == MeshSymmetry::quarter ? 3 : 8))
       return;
     // the core's cells are Core half width / ceil(Core half width / Cell
     // size) wide, which may differ from Cell size

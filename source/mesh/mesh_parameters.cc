@@ -25,6 +25,17 @@ namespace ssc
       "radially and few around, as a peer's graded mesh has them. Cell size, "
       "Core half width and Grading ratio are not used by the o-grid.",
       Patterns::Selection(enum_names<MeshLayout>()));
+    prm.add_parameter(
+      "Symmetry",
+      symmetry,
+      "none: mesh the whole patch. quarter: mesh only x >= 0, y >= 0 "
+      "(Patch lengths stay those of the whole patch) and hold the normal "
+      "displacement on the planes x = 0 and y = 0: a quarter of the DoFs for "
+      "a problem symmetric about both planes (the layer thicknesses too: "
+      "ssc does not check expressions). Forces, stiffness and areas are "
+      "reported for the whole patch. Box layout and the indentation scene "
+      "without microstructure or edge contact.",
+      Patterns::Selection(enum_names<MeshSymmetry>()));
     prm.add_parameter("Patch length x",
                       patch_length_x,
                       "Lateral extent of the patch in x, mm, centred at 0.",
@@ -52,6 +63,16 @@ namespace ssc
                       "of a rectangular probe: Punch/Shape = rectangle); 0: "
                       "the same as Core half width.",
                       Patterns::Double(0, 1e4));
+    prm.add_parameter(
+      "Core edge cell size",
+      core_edge_cell_size,
+      "Box layout: 0 for a uniform core; else the lateral cell size (mm) at "
+      "the core's edges (e.g. a rectangular probe's edges, where the "
+      "stresses are singular), growing by Grading ratio away from them, "
+      "inwards up to Cell size and outwards to the patch edge; the cell "
+      "heights then start at this size at the skin surface and grow by the "
+      "same ratio, each layer keeping at least its Cells across.",
+      Patterns::Double(0, 1e4));
     prm.add_parameter("Grading ratio",
                       grading_ratio,
                       "Growth ratio of the lateral cell size outside the "
@@ -151,6 +172,13 @@ namespace ssc
                 ExcMessage("Mesh/Fitted circle radius: the fitted circle "
                            "and its blending zone (twice the radius) must "
                            "lie inside the patch."));
+    AssertThrow(core_edge_cell_size == 0 ||
+                  (layout == MeshLayout::box && grading_ratio > 1 &&
+                   core_edge_cell_size <= cell_size),
+                ExcMessage("Mesh/Core edge cell size > 0 grades the box "
+                           "layout's cells from the core's edges: it needs "
+                           "Layout = box, Grading ratio > 1 and a size of "
+                           "at most Cell size."));
     if (layout == MeshLayout::o_grid)
       {
         AssertThrow(fitted_circle_radius > 0,

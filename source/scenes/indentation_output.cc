@@ -9,13 +9,17 @@
 namespace ssc
 {
   std::vector<Point<3>>
-  profile_points(const PunchParameters &punch, const double patch_length)
+  profile_points(const PunchParameters &punch,
+                 const double           patch_length,
+                 const bool             from_centre)
   {
-    const double          L = std::min(punch.profile_length, patch_length);
-    const unsigned int    n = punch.profile_points;
+    const double          L     = std::min(punch.profile_length, patch_length);
+    const unsigned int    n     = punch.profile_points;
+    const double          start = from_centre ? 0. : -L / 2;
+    const double          span  = from_centre ? L / 2 : L;
     std::vector<Point<3>> points;
     for (unsigned int i = 0; i < n; ++i)
-      points.emplace_back(-L / 2 + L * i / (n - 1), 0., 0.);
+      points.emplace_back(start + span * i / (n - 1), 0., 0.);
     return points;
   }
 
@@ -73,7 +77,10 @@ namespace ssc
     std::vector<Point<3>> points;
     for (unsigned int i = 0; i < nx; ++i)
       {
-        const double x = -L / 2 + L * i / (nx - 1);
+        // a quarter model holds x >= 0 only
+        const double x = parameters.mesh.symmetry == MeshSymmetry::quarter ?
+                           L / 2 * i / (nx - 1) :
+                           -L / 2 + L * i / (nx - 1);
         const double bottom =
           layers.depth_of_interface(layers.n_layers(), x, 0.);
         for (unsigned int k = 0; k < nz; ++k)

@@ -55,7 +55,8 @@ namespace ssc
     const auto         profile_at =
       profile_points(punch,
                      std::min(parameters.mesh.patch_length_x,
-                              parameters.mesh.patch_length_y));
+                              parameters.mesh.patch_length_y),
+                     parameters.mesh.symmetry == MeshSymmetry::quarter);
     const auto profile_locations = punch.profile_length > 0 ?
                                      locator.locate(profile_at) :
                                      std::vector<PointLocation>();
@@ -187,6 +188,7 @@ namespace ssc
                                  {"area_mm2_per_step", contact_areas},
                                  {"max_penetration_mm_per_step",
                                   contact_penetrations}};
+    summary["symmetry"]       = to_string(parameters.mesh.symmetry);
     summary["punch_shape"]    = to_string(punch.shape);
     summary["punch_area_mm2"] = punch.area();
     if (punch.shape == PunchShape::circle)
@@ -217,6 +219,7 @@ namespace ssc
             depths,
             forces,
             stiffness,
-            reference};
+            reference,
+            layer_strains};
   }
 } // namespace ssc

@@ -15,6 +15,7 @@ namespace ssc
                              ConditionalOStream &pcout)
     : system(system)
     , by_force(parameters.punch.control == PunchControl::force)
+    , symmetry_factor(parameters.mesh.symmetry_factor())
   {
     TimerOutput::Scope     t(timer, "setup");
     const PunchParameters &punch    = parameters.punch;
@@ -69,10 +70,12 @@ namespace ssc
                    "surface, so its edges would cut through cells. Put mesh "
                    "lines there: Mesh/Core half width = Length/2, Core half "
                    "width y = Width/2 and Grading ratio > 1.";
-        AssertThrow(n_corners == 4, ExcMessage(message.str()));
+        // a quarter model has the corner x > 0, y > 0 only
+        AssertThrow(n_corners == (symmetry_factor > 1 ? 1 : 4),
+                    ExcMessage(message.str()));
       }
     std::vector<DirichletCondition> conditions =
-      support_conditions(parameters.elasticity.sides);
+      support_conditions(parameters.elasticity.sides, parameters.mesh.symmetry);
     std::vector<TiedCondition> ties;
     ComponentMask              components(3, false);
     if (punch.contact == PunchContact::bonded)
@@ -128,7 +131,7 @@ namespace ssc
       {
         system.apply_constraints();
         system.loads().nodal_forces = {
-          {system.constraints().master_dof(0), -load}};
+          {system.constraints().master_dof(0), -load / symmetry_factor}};
       }
     else
       // Newton's first update takes the punch to the new depth
@@ -139,7 +142,7 @@ namespace ssc
   double
   PunchLoading::reaction_force()
   {
-    return -system.reaction(punch_condition)[2];
+    return -symmetry_factor * system.reaction(punch_condition)[2];
   }
 
 

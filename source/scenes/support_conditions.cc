@@ -8,21 +8,25 @@
 namespace ssc
 {
   std::vector<DirichletCondition>
-  support_conditions(const SideCondition sides)
+  support_conditions(const SideCondition sides, const MeshSymmetry symmetry)
   {
     auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
     std::vector<DirichletCondition> conditions;
     conditions.push_back(
       {BoundaryId::bottom, ComponentMask(3, true), zero, {}});
-    if (sides == SideCondition::free)
-      return conditions;
-    const bool fixed = sides == SideCondition::fixed;
+    const bool quarter = symmetry == MeshSymmetry::quarter;
+    const bool fixed   = sides == SideCondition::fixed;
     for (const types::boundary_id id : {BoundaryId::x_min,
                                         BoundaryId::x_max,
                                         BoundaryId::y_min,
                                         BoundaryId::y_max})
       {
-        ComponentMask mask(3, fixed);
+        const bool symmetry_plane =
+          quarter && (id == BoundaryId::x_min || id == BoundaryId::y_min);
+        if (sides == SideCondition::free && !symmetry_plane)
+          continue;
+        // a symmetry plane holds its normal component only
+        ComponentMask mask(3, fixed && !symmetry_plane);
         mask.set(id <= BoundaryId::x_max ? 0 : 1, true);
         conditions.push_back({id, mask, zero, {}});
       }

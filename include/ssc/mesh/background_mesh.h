@@ -75,12 +75,21 @@ namespace ssc
     }
 
     /// Symmetric cell sizes over [-L/2, L/2]: uniform of size <= h inside
-    /// the core, growing geometrically by @p ratio outside it.
+    /// the core, growing geometrically by @p ratio outside it; with an
+    /// @p edge_size > 0, graded from that size at the core's edges both
+    /// ways (inwards up to h).
     static std::vector<double>
     graded_steps(const double L,
                  const double h,
                  const double core_half_width,
-                 const double ratio);
+                 const double ratio,
+                 const double edge_size = 0);
+
+    /// The box layout's cell sizes along x (@p direction 0) or y (1): over
+    /// the whole patch, or from the centre outwards for a quarter.
+    static std::vector<double>
+    lateral_steps(const MeshParameters &parameters,
+                  const unsigned int    direction);
 
     /// Cell heights through the stack in the chart (each layer of unit
     /// height), from the bottom up: each layer's Cells across and Grading,

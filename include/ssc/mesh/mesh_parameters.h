@@ -25,6 +25,23 @@ namespace ssc
     return {{{MeshLayout::box, "box"}, {MeshLayout::o_grid, "o-grid"}}};
   }
 
+  /// Which part of a patch symmetric about the planes x = 0 and y = 0 is
+  /// meshed.
+  enum class MeshSymmetry
+  {
+    /// The whole patch.
+    none,
+    /// The quarter x >= 0, y >= 0, with the normal displacement held on
+    /// the planes x = 0 and y = 0.
+    quarter
+  };
+
+  constexpr std::array<std::pair<MeshSymmetry, const char *>, 2>
+  enum_table(MeshSymmetry)
+  {
+    return {{{MeshSymmetry::none, "none"}, {MeshSymmetry::quarter, "quarter"}}};
+  }
+
   /// Outer boundary of an o-grid patch.
   enum class OuterBoundary
   {
@@ -47,15 +64,18 @@ namespace ssc
    */
   struct MeshParameters
   {
-    MeshLayout layout          = MeshLayout::box;
-    double     patch_length_x  = 40;
-    double     patch_length_y  = 40;
-    double     cell_size       = 2;
-    double     core_half_width = 10;
+    MeshLayout   layout          = MeshLayout::box;
+    MeshSymmetry symmetry        = MeshSymmetry::none;
+    double       patch_length_x  = 40;
+    double       patch_length_y  = 40;
+    double       cell_size       = 2;
+    double       core_half_width = 10;
     /// 0: the same as core_half_width.
-    double       core_half_width_y  = 0;
-    double       grading_ratio      = 1;
-    unsigned int global_refinements = 0;
+    double core_half_width_y = 0;
+    /// 0: a uniform core.
+    double       core_edge_cell_size = 0;
+    double       grading_ratio       = 1;
+    unsigned int global_refinements  = 0;
     /// Radius of the circle around the centre that mesh lines follow
     /// (0: none); see DiskFittingMap.
     double fitted_circle_radius = 0;
@@ -77,7 +97,14 @@ namespace ssc
     double       roi_shrink        = 1;
     unsigned int local_refinements = 0;
 
-    /// Declares section "Mesh", bound to the members.
+    /// How many copies of the meshed part make the whole patch (1 or 4):
+    /// forces and areas of the whole patch are this times the model's.
+    double
+    symmetry_factor() const
+    {
+      return symmetry == MeshSymmetry::quarter ? 4. : 1.;
+    }
+
     /// Half width (mm) of the core in direction @p d (0: x, 1: y).
     double
     core_half_width_in(const unsigned int d) const
@@ -86,6 +113,7 @@ namespace ssc
                                                  core_half_width;
     }
 
+    /// Declares section "Mesh", bound to the members.
     void
     add_parameters(ParameterHandler &prm);
 

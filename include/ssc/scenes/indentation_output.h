@@ -12,9 +12,12 @@
 
 namespace ssc
 {
-  /// The points of the surface profile: y = 0, z = 0, centred in x.
+  /// The points of the surface profile: y = 0, z = 0, centred in x (or
+  /// from x = 0 outwards @p from_centre, for a quarter model).
   std::vector<Point<3>>
-  profile_points(const PunchParameters &punch, const double patch_length);
+  profile_points(const PunchParameters &punch,
+                 const double           patch_length,
+                 const bool             from_centre);
 
   /// u_z of @p field at the located points @p locations (collective).
   std::vector<double>

@@ -18,13 +18,16 @@ namespace ssc
     std::vector<double>     forces; ///< N, per load step
     double                  stiffness            = 0;
     double                  half_space_stiffness = 0;
+    /// Each layer's compressive strain under the punch centre, per load
+    /// step (outer) and layer from the top (inner).
+    std::vector<std::vector<double>> layer_strains;
   };
 
   /**
-   * A rigid flat cylindrical punch at the patch centre, bonded or
-   * frictionless, under displacement control (the depths are prescribed,
-   * the force is the reaction computed from the assembled residual) or
-   * force control (the forces are prescribed, the vertical displacements
+   * A rigid flat punch (cylindrical or rectangular) at the patch centre,
+   * bonded or frictionless, under displacement control (the depths are
+   * prescribed, the force is the reaction computed from the assembled residual)
+   * or force control (the forces are prescribed, the vertical displacements
    * under the punch are tied to one master unknown whose value is the
    * depth). Small-strain elasticity is linear, so one solve for a unit load
    * gives every load step by scaling.

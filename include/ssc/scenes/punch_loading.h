@@ -61,8 +61,10 @@ namespace ssc
     }
 
   private:
-    ElasticSystem                     &system;
-    const bool                         by_force;
+    ElasticSystem &system;
+    const bool     by_force;
+    /// The whole patch's forces over the model's (4 for a quarter).
+    const double                       symmetry_factor;
     unsigned int                       punch_condition = 0;
     std::unique_ptr<RigidPunchContact> contact;
   };
