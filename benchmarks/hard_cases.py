@@ -12,12 +12,15 @@ core.
 Writes benchmarks/results/hard_cases.csv and prints a Markdown table.
 
     /usr/bin/python3 benchmarks/hard_cases.py [--jobs N] [--cases I ...]
+        [--set KEY=VALUE ...] [--csv NAME] [--timeout S]
 
 (--jobs 2 runs two cases at a time on the 2 cores: their wall times then
 include the sharing. --cases runs the cases of these indices (from 0, in
 the order of CASES) and replaces their rows in the CSV, the others stay.
 SSC_BUILD_DIR chooses the build, as for ssc.sh. The run folders, with
-their log.txt, stay in output/hard_cases/caseI/.)
+their log.txt, stay in output/hard_cases/caseI/. --set adds an entry to
+every case, e.g. "Elasticity/Linear solver/Preconditioner=cholesky", and
+--csv names the results file for such a variant.)
 """
 import argparse, concurrent.futures, csv, json, os, subprocess, time
 
@@ -81,7 +84,7 @@ FIELDS = ["case", "converged", "message", "force_N", "depth_mm",
           "wall_time_s", "dofs"]
 
 
-def run(label, overrides, folder, index):
+def run(label, overrides, folder, index, timeout):
     name = f"case{index}"
     args = [SSC, PRM, "-s", f"Run/Output directory={folder}",
             "-s", f"Run/Name={name}"]
@@ -90,10 +93,10 @@ def run(label, overrides, folder, index):
     start = time.time()
     try:
         result = subprocess.run(args, capture_output=True, text=True,
-                                timeout=TIMEOUT)
+                                timeout=timeout)
         status, stderr = result.returncode, result.stderr
     except subprocess.TimeoutExpired:
-        status, stderr = -1, f"timeout after {TIMEOUT} s"
+        status, stderr = -1, f"timeout after {timeout} s"
     wall = time.time() - start
     row = dict(case=label, converged="yes" if status == 0 else "no",
                message="", wall_time_s=f"{wall:.1f}")
@@ -114,10 +117,9 @@ def run(label, overrides, folder, index):
     return row
 
 
-def merged_rows(new_rows):
+def merged_rows(new_rows, path):
     """The CSV's rows in the order of CASES: the new ones, and the old ones
     of the cases not run now."""
-    path = os.path.join(OUT, "hard_cases.csv")
     by_case = {}
     if os.path.exists(path):
         with open(path, newline="") as f:
@@ -132,20 +134,30 @@ def main():
     parser.add_argument("--cases", type=int, nargs="+",
                         choices=range(len(CASES)),
                         default=list(range(len(CASES))))
+    parser.add_argument("--set", nargs="+", default=[], metavar="KEY=VALUE",
+                        help="entries added to every case")
+    parser.add_argument("--csv", default="hard_cases.csv")
+    parser.add_argument("--timeout", type=float, default=TIMEOUT)
     args = parser.parse_args()
+    common = dict(entry.split("=", 1) for entry in args.set)
+    # a variant's run folders must not overwrite the default's
+    variant = os.path.splitext(args.csv)[0]
     os.makedirs(OUT, exist_ok=True)
     # the run folders, with their logs, stay for a look at what a case did
-    folder = os.path.join(ROOT, "output", "hard_cases")
+    folder = os.path.join(ROOT, "output", variant)
     os.makedirs(folder, exist_ok=True)
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        futures = [pool.submit(run, *CASES[index], folder, index)
+        futures = [pool.submit(run, CASES[index][0],
+                               {**common, **CASES[index][1]}, folder, index,
+                               args.timeout)
                    for index in args.cases]
         new_rows = []
         for future in futures:
             new_rows.append(future.result())
             print(new_rows[-1], flush=True)
-    rows = merged_rows(new_rows)
-    with open(os.path.join(OUT, "hard_cases.csv"), "w", newline="") as f:
+    path = os.path.join(OUT, args.csv)
+    rows = merged_rows(new_rows, path)
+    with open(path, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=FIELDS)
         writer.writeheader()
         writer.writerows(rows)
