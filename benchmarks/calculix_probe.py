@@ -98,9 +98,10 @@ lower, then of the upper face counter-clockwise, midsides of their edges,
 then the vertical midsides; a 20-node element's data line continued on a
 second line); *STATIC with SPOOLES' direct solver, the only one in this
 build. Runs: OMP_NUM_THREADS = CCX_NPROC_EQUATION_SOLVER = 1, niced; wall
-time of the ccx process; peak memory from /usr/bin/time -v. Standard
-library only (the helpers run_ccx, total_forces and graded_segment
-follow calculix_punch.py, which needs numpy and so is not imported).
+time of the ccx process; peak memory from /usr/bin/time -v. Running ccx
+and reading its total forces: calculix_punch.py's run_ccx and
+total_forces (run it with /usr/bin/python3, whose numpy calculix_punch
+needs).
 
 Run (writes benchmarks/results/calculix_probe.csv: nu, element, level,
 equations, K_N_per_mm, strain_skin, strain_fat, strain_muscle, wall_s;
@@ -115,14 +116,14 @@ import csv
 import math
 import os
 import re
-import shutil
-import subprocess
+import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from calculix_punch import CCX, _fmt, _lines, run_ccx, total_forces  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CCX = shutil.which("ccx") or "/usr/bin/ccx"
-TIME = "/usr/bin/time" if os.path.exists("/usr/bin/time") else None
 
 # the problem (mm, N, MPa)
 HALF_X, HALF_Y = 52.5, 34.0          # block half sizes
@@ -148,70 +149,8 @@ CSV_FIELDS = ["nu", "element", "level", "equations", "K_N_per_mm",
 
 
 # --------------------------------------------------------------------------
-# running ccx
+# running ccx: calculix_punch's helpers (one thread, niced, peak memory)
 # --------------------------------------------------------------------------
-def _lines(values, per_line=16):
-    """ccx reads at most 16 entries per data line."""
-    values = list(values)
-    return [", ".join(str(v) for v in values[k:k + per_line])
-            for k in range(0, len(values), per_line)]
-
-
-def _fmt(x):
-    return f"{x:.12e}"
-
-
-def run_ccx(workdir, job, text, threads=1, niceness=5, timeout=600):
-    """Writes job.inp, runs ccx on one thread (niced); returns dict(dat,
-    log, equations, time_s (wall), memory_MB (peak resident, from
-    /usr/bin/time -v)). Raises RuntimeError on a ccx error."""
-    os.makedirs(workdir, exist_ok=True)
-    with open(os.path.join(workdir, job + ".inp"), "w") as f:
-        f.write(text)
-    for ext in (".dat", ".frd", ".sta", ".cvg"):
-        path = os.path.join(workdir, job + ext)
-        if os.path.exists(path):
-            os.remove(path)
-    n = str(threads)
-    env = dict(os.environ, OMP_NUM_THREADS=n, CCX_NPROC_EQUATION_SOLVER=n,
-               CCX_NPROC_STIFFNESS=n, CCX_NPROC_RESULTS=n)
-    args = ["nice", "-n", str(niceness), CCX, "-i", job]
-    if TIME:
-        args = [TIME, "-v"] + args
-    start = time.perf_counter()
-    p = subprocess.run(args, cwd=workdir, env=env, capture_output=True,
-                       text=True, timeout=timeout)
-    wall = time.perf_counter() - start
-    memory = float("nan")
-    if TIME:
-        m = re.search(r"Maximum resident set size \(kbytes\): (\d+)",
-                      p.stderr)
-        memory = int(m.group(1)) / 1024 if m else memory
-    log = p.stdout
-    dat_path = os.path.join(workdir, job + ".dat")
-    if p.returncode != 0 or "*ERROR" in log or not os.path.exists(dat_path):
-        errors = [l for l in log.splitlines() if "ERROR" in l]
-        raise RuntimeError(f"ccx failed on {workdir}/{job}.inp "
-                           f"(exit {p.returncode}): {errors[:5]}\n"
-                           f"{log[-2000:]}{p.stderr[-1000:]}")
-    with open(dat_path) as f:
-        dat = f.read()
-    for ext in (".frd",):  # not needed, can be large
-        path = os.path.join(workdir, job + ext)
-        if os.path.exists(path):
-            os.remove(path)
-    m = re.search(r"number of equations\s+(\d+)", log)
-    return dict(dat=dat, log=log, equations=int(m.group(1)) if m else None,
-                time_s=wall, memory_MB=memory)
-
-
-def total_forces(dat):
-    """(fx, fy, fz) of every 'total force' block of a .dat file."""
-    return [tuple(float(v) for v in m.groups()) for m in re.finditer(
-        r"total force \(fx,fy,fz\) for set \S+ and time\s+\S+\s*\n\s*\n"
-        r"\s*(\S+)\s+(\S+)\s+(\S+)", dat)]
-
-
 def displacements(dat, nset):
     """{node: (ux, uy, uz)} of the 'displacements' block of set nset."""
     m = re.search(r"displacements \(vx,vy,vz\) for set " + nset +

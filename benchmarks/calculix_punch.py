@@ -169,11 +169,13 @@ def _fmt(x):
     return f"{x:.12e}"
 
 
-def run_ccx(workdir, job, text, threads=1, niceness=5):
+def run_ccx(workdir, job, text, threads=1, niceness=5, timeout=None):
     """Writes job.inp into workdir, runs ccx on it (niced, with threads
-    threads) and returns dict(dat (the .dat file), log (ccx's output),
-    equations, solver, time_s (wall), cpu_s, memory_MB (peak resident)).
-    Raises RuntimeError if ccx reports an error or writes no .dat file."""
+    threads, stopped after timeout seconds if given) and returns dict(dat
+    (the .dat file), log (ccx's output), equations, solver, time_s (wall),
+    cpu_s, memory_MB (peak resident)); the .frd results, unused and large,
+    are deleted. Raises RuntimeError if ccx reports an error or writes no
+    .dat file."""
     os.makedirs(workdir, exist_ok=True)
     with open(os.path.join(workdir, job + ".inp"), "w") as f:
         f.write(text)
@@ -188,7 +190,7 @@ def run_ccx(workdir, job, text, threads=1, niceness=5):
         args = [TIME, "-v"] + args
     start = time.perf_counter()
     p = subprocess.run(args, cwd=workdir, env=env, capture_output=True,
-                       text=True)
+                       text=True, timeout=timeout)
     wall = time.perf_counter() - start
     if TIME:
         m = re.search(r"Maximum resident set size \(kbytes\): (\d+)",
@@ -209,6 +211,9 @@ def run_ccx(workdir, job, text, threads=1, niceness=5):
                            f"{log[-2000:]}{p.stderr[-1000:]}")
     with open(dat_path) as f:
         dat = f.read()
+    frd_path = os.path.join(workdir, job + ".frd")
+    if os.path.exists(frd_path):
+        os.remove(frd_path)
     m = re.search(r"number of equations\s+(\d+)", log)
     solver = re.search(r"Factoring the system of equations using the (.*)",
                        log)
