@@ -254,6 +254,19 @@ def richardson(values):
 # --------------------------------------------------------------------------
 # the force convention of axisymmetric elements
 # --------------------------------------------------------------------------
+def _node_sets_and_layers(sets, nu):
+    """The *NSET blocks of sets ({name: nodes}) and each layer's material
+    (E, nu) and solid section on its element set."""
+    L = []
+    for name, nodes in sets.items():
+        L.append(f"*NSET, NSET={name}")
+        L += _lines(nodes)
+    for name, _, E in LAYERS:
+        L += [f"*MATERIAL, NAME=M{name}", "*ELASTIC", f"{E!r}, {nu!r}",
+              f"*SOLID SECTION, ELSET={name}, MATERIAL=M{name}"]
+    return L
+
+
 def _quad8(nid, i, j):
     """The 8 node ids of the quadratic quadrilateral whose lower-left corner
     is node (i, j) of a grid with midside nodes (corners first,
@@ -458,12 +471,7 @@ def axisymmetric_input(nu, r, z, element="CAX8R"):
             "SIDE": [nid(NR - 1, j) for j in range(NZ)],
             "AXIS": [nid(0, j) for j in range(NZ)],
             "PUNCH": [nid(i, NZ - 1) for i in range(NR) if R[i] <= ON_PUNCH]}
-    for name, nodes in sets.items():
-        L.append(f"*NSET, NSET={name}")
-        L += _lines(nodes)
-    for name, _, E in LAYERS:
-        L += [f"*MATERIAL, NAME=M{name}", "*ELASTIC", f"{E!r}, {nu!r}",
-              f"*SOLID SECTION, ELSET={name}, MATERIAL=M{name}"]
+    L += _node_sets_and_layers(sets, nu)
     L += ["*STEP", "*STATIC", "*BOUNDARY", "BOTTOM, 1, 2, 0.0",
           "SIDE, 1, 2, 0.0", "AXIS, 1, 1, 0.0", "PUNCH, 1, 1, 0.0",
           f"PUNCH, 2, 2, {-INDENT!r}",
@@ -755,12 +763,7 @@ def peer_3d_input(nu, grid, z, element="C3D20R"):
         "PUNCH": [corner(v, top) for v in range(nv) if radius[v] <= ON_PUNCH]
                  + [edge_node(k, top) for k in range(ne2)
                     if mid_radius[k] <= ON_PUNCH]}
-    for name, nodes in sets.items():
-        L.append(f"*NSET, NSET={name}")
-        L += _lines(nodes)
-    for name, _, E in LAYERS:
-        L += [f"*MATERIAL, NAME=M{name}", "*ELASTIC", f"{E!r}, {nu!r}",
-              f"*SOLID SECTION, ELSET={name}, MATERIAL=M{name}"]
+    L += _node_sets_and_layers(sets, nu)
     L += ["*STEP", "*STATIC", "*BOUNDARY", "BOTTOM, 1, 3, 0.0",
           "SIDE, 1, 3, 0.0", "PUNCH, 1, 2, 0.0", f"PUNCH, 3, 3, {-INDENT!r}",
           "*NODE PRINT, NSET=PUNCH, TOTALS=ONLY", "RF", "*END STEP"]
