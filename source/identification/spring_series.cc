@@ -18,6 +18,9 @@ namespace ssc
 
   namespace
   {
+    /// The springs, from the top.
+    const char *const layer_names[] = {"skin", "fat", "muscle"};
+
     std::array<double, 3>
     thicknesses(const IndentationTrial &trial)
     {
@@ -82,13 +85,12 @@ namespace ssc
     Vector<double> layer_compliances(3);
     Householder<double>(design).least_squares(layer_compliances,
                                               compliance_times_area);
-    const char           *names[] = {"skin", "fat", "muscle"};
     std::array<double, 3> moduli;
     for (unsigned int i = 0; i < 3; ++i)
       {
         std::ostringstream message;
         message << "Springs in series: the fitted compliance of the "
-                << names[i] << " layer is " << layer_compliances(i)
+                << layer_names[i] << " layer is " << layer_compliances(i)
                 << " mm^2/N, not positive: these " << trials.size()
                 << " trials do not determine its modulus.";
         AssertThrow(layer_compliances(i) > 0, ExcMessage(message.str()));
@@ -114,13 +116,12 @@ namespace ssc
           strain_times_pressure[i] += strains[i] * pressure;
         pressure_squared += pressure * pressure;
       }
-    const char           *names[] = {"skin", "fat", "muscle"};
     std::array<double, 3> moduli;
     for (unsigned int i = 0; i < 3; ++i)
       {
         AssertThrow(strain_times_pressure[i] > 0,
                     ExcMessage(std::string("Springs in series: the ") +
-                               names[i] +
+                               layer_names[i] +
                                " layer's strains do not grow with the "
                                "pressure in these trials; its modulus is "
                                "undetermined."));

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -16,6 +18,40 @@
 
 namespace ssc
 {
+  namespace
+  {
+    /**
+     * Sizes that continue a geometric sequence over a segment of @p length:
+     * from @p size, each @p ratio times the one before but at most @p cap,
+     * until they reach @p length (to @p tolerance); the last one is dropped
+     * if it overshoots by more than half of itself. @p size becomes the
+     * sequence's next size. The caller scales the sizes to the segment.
+     */
+    std::vector<double>
+    continue_graded(double      &size,
+                    const double ratio,
+                    const double cap,
+                    const double length,
+                    const double tolerance)
+    {
+      std::vector<double> steps;
+      double              sum = 0;
+      while (sum < length - tolerance)
+        {
+          steps.push_back(size);
+          sum += size;
+          size = std::min(cap, size * ratio);
+        }
+      if (steps.size() > 1 && sum - length > 0.5 * steps.back())
+        {
+          size = steps.back();
+          steps.pop_back();
+        }
+      return steps;
+    }
+  } // namespace
+
+
   BackgroundMesh::BackgroundMesh(const LayerStack     &layers,
                                  const MeshParameters &parameters,
                                  const MPI_Comm        mpi_communicator,
@@ -45,22 +81,13 @@ namespace ssc
     std::vector<double> half_steps;
     if (edge_size > 0)
       {
-        // from the core's edge inwards: growing from edge_size, at most h;
-        // the last one dropped if it overshoots by more than half, then
+        // from the core's edge inwards: growing from edge_size, at most h,
         // scaled to the core
-        double size = edge_size, sum = 0;
-        while (sum < core_half_width - 1e-10 * L)
-          {
-            half_steps.push_back(size);
-            sum += size;
-            size = std::min(h, size * ratio);
-          }
-        if (half_steps.size() > 1 &&
-            sum - core_half_width > 0.5 * half_steps.back())
-          {
-            sum -= half_steps.back();
-            half_steps.pop_back();
-          }
+        double size = edge_size;
+        half_steps =
+          continue_graded(size, ratio, h, core_half_width, 1e-10 * L);
+        const double sum =
+          std::accumulate(half_steps.begin(), half_steps.end(), 0.);
         for (double &step : half_steps)
           step *= core_half_width / sum;
         std::reverse(half_steps.begin(), half_steps.end());
@@ -140,23 +167,13 @@ namespace ssc
         std::vector<double> h;
         if (graded_from_surface)
           {
-            // heights continue the surface's geometric sequence; the last
-            // one is dropped if it overshoots by more than half, then the
-            // layer's steps are scaled to its thickness at the centre
-            const double thickness = layer.thickness(0, 0);
-            double       sum       = 0;
-            while (sum < thickness)
-              {
-                h.push_back(height);
-                sum += height;
-                height *= ratio;
-              }
-            if (h.size() > 1 && sum - thickness > 0.5 * h.back())
-              {
-                sum -= h.back();
-                h.pop_back();
-                height /= ratio;
-              }
+            // heights continue the surface's geometric sequence over the
+            // layer's thickness at the centre
+            h = continue_graded(height,
+                                ratio,
+                                std::numeric_limits<double>::infinity(),
+                                layer.thickness(0, 0),
+                                0.);
             if (h.size() < layer.n_cells_across)
               h.assign(layer.n_cells_across, 1.);
           }

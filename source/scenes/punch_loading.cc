@@ -38,12 +38,10 @@ namespace ssc
               {
                 const Point<3> &p = face->vertex(v);
                 n_under += on_punch(p);
-                for (unsigned int c = 0; c < 4; ++c)
-                  corner_found[c] =
-                    corner_found[c] ||
-                    (std::abs(std::abs(p[0]) - punch.length / 2) < 1e-9 &&
-                     std::abs(std::abs(p[1]) - punch.width / 2) < 1e-9 &&
-                     (p[0] > 0) == (c % 2 == 1) && (p[1] > 0) == (c / 2 == 1));
+                // corners numbered by the signs of x and y
+                if (std::abs(std::abs(p[0]) - punch.length / 2) < 1e-9 &&
+                    std::abs(std::abs(p[1]) - punch.width / 2) < 1e-9)
+                  corner_found[(p[0] > 0) + 2 * (p[1] > 0)] = true;
               }
     const MPI_Comm communicator =
       system.field().triangulation().get_communicator();
