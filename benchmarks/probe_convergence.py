@@ -56,7 +56,7 @@ def reference(nu):
             ["K_N_per_mm", "strain_skin", "strain_fat", "strain_muscle"]}
 
 
-def run_ssc(nu, mesh, folder, quarter=True):
+def run_ssc(nu, mesh, folder):
     degree, h, edge, grading, across = mesh
     name = f"q{degree}_h{h}_e{edge}_g{grading}_{'-'.join(map(str, across))}_nu{nu}"
     args = [SSC, PRM, "-s", f"Run/Output directory={folder}",
@@ -66,7 +66,7 @@ def run_ssc(nu, mesh, folder, quarter=True):
             "-s", f"Elasticity/Degree={degree}",
             "-s", f"Mesh/Cell size={h}", "-s", f"Mesh/Grading ratio={grading}",
             "-s", f"Mesh/Core edge cell size={edge}",
-            "-s", f"Mesh/Symmetry={'quarter' if quarter else 'none'}"]
+            "-s", "Mesh/Symmetry=quarter"]
     for layer, n in zip(LAYERS, across):
         args += ["-s", f"Layer stack/{layer}/Material model=linear",
                  "-s", f"Layer stack/{layer}/Young's modulus={MODULI[layer]}",
