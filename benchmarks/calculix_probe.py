@@ -121,7 +121,8 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from calculix_punch import CCX, _fmt, _lines, run_ccx, total_forces  # noqa: E402
+from calculix_punch import (CCX, _brick20, _element_sets, _fmt,  # noqa: E402
+                            _lines, run_ccx, total_forces)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -329,12 +330,9 @@ def probe_input(nu, x, y, z, element="C3D20R", full=False):
                         [ids[a, b, k + 2] for a, b in mids] + \
                         [ids[a, b, k + 1] for a, b in quad]
                 e += 1
-                L.append(f"{e}, " + ", ".join(map(str, nodes[:15])) + ",")
-                L.append(", ".join(map(str, nodes[15:])))
+                L += _brick20(e, nodes)
                 elsets[layer].append(e)
-    for name, elements in elsets.items():
-        L.append(f"*ELSET, ELSET={name}")
-        L += _lines(elements)
+    L += _element_sets(elsets)
     i0 = X.index(0.0)
     j0 = Y.index(0.0)
     k1 = min(range(NZ), key=lambda k: abs(Z[k] - INTERFACES[0]))

@@ -254,6 +254,22 @@ def richardson(values):
 # --------------------------------------------------------------------------
 # the force convention of axisymmetric elements
 # --------------------------------------------------------------------------
+def _brick20(e, nodes):
+    """The data lines of 20-node element e: ccx takes at most 16 entries
+    per line, so the line continues on a second one."""
+    return [f"{e}, " + ", ".join(map(str, nodes[:15])) + ",",
+            ", ".join(map(str, nodes[15:]))]
+
+
+def _element_sets(elsets):
+    """The *ELSET blocks of elsets ({name: elements})."""
+    L = []
+    for name, elements in elsets.items():
+        L.append(f"*ELSET, ELSET={name}")
+        L += _lines(elements)
+    return L
+
+
 def _node_sets_and_layers(sets, nu):
     """The *NSET blocks of sets ({name: nodes}) and each layer's material
     (E, nu) and solid section on its element set."""
@@ -741,13 +757,9 @@ def peer_3d_input(nu, grid, z, element="C3D20R"):
                     [edge_node(k, l + 1) for k in es] + \
                     [vertical(v, l) for v in qd]
             e += 1
-            # 20 nodes: the element's data line continues on a second line
-            L.append(f"{e}, " + ", ".join(map(str, nodes[:15])) + ",")
-            L.append(", ".join(map(str, nodes[15:])))
+            L += _brick20(e, nodes)
             elsets[layer].append(e)
-    for name, elements in elsets.items():
-        L.append(f"*ELSET, ELSET={name}")
-        L += _lines(elements)
+    L += _element_sets(elsets)
     outer_edges = [k for (v0, v1), k in edges.items()
                    if v0 in grid.outer and v1 in grid.outer]
     radius = np.hypot(*grid.vertices.T)
