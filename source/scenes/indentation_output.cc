@@ -38,6 +38,27 @@ namespace ssc
   }
 
 
+  CentreAxisStrains::CentreAxisStrains(const LayerStack   &stack,
+                                       const PointLocator &locator)
+  {
+    for (unsigned int k = 0; k <= stack.n_layers(); ++k)
+      interfaces.emplace_back(0, 0, -stack.depth_of_interface(k, 0, 0));
+    locations = locator.locate(interfaces);
+  }
+
+
+  std::vector<double>
+  CentreAxisStrains::evaluate(const DisplacementField &field) const
+  {
+    const std::vector<double> uz = vertical_displacements(locations, field);
+    std::vector<double>       strains;
+    for (unsigned int l = 0; l + 1 < interfaces.size(); ++l)
+      strains.push_back((uz[l + 1] - uz[l]) /
+                        (interfaces[l][2] - interfaces[l + 1][2]));
+    return strains;
+  }
+
+
   void
   write_surface_profile(const PunchParameters                  &punch,
                         const std::vector<Point<3>>            &points,

@@ -60,13 +60,10 @@ namespace ssc
     const auto profile_locations = punch.profile_length > 0 ?
                                      locator.locate(profile_at) :
                                      std::vector<PointLocation>();
-    // the layer interfaces on the punch's axis: each layer's compression
-    // under the punch centre, as an ultrasound image measures it
-    const LayerStack     &stack = parameters.layers;
-    std::vector<Point<3>> axis_points;
-    for (unsigned int k = 0; k <= stack.n_layers(); ++k)
-      axis_points.emplace_back(0, 0, -stack.depth_of_interface(k, 0, 0));
-    const auto axis_locations = locator.locate(axis_points);
+    // each layer's compression under the punch centre, as an ultrasound
+    // image measures it
+    const LayerStack                &stack = parameters.layers;
+    const CentreAxisStrains          centre_axis(stack, locator);
     std::vector<std::vector<double>> layer_strains;
     const std::vector<double>        loads = punch.loads();
     std::vector<double>              depths, forces;
@@ -107,13 +104,7 @@ namespace ssc
         }
       forces.push_back(force);
       depths.push_back(depth);
-      const std::vector<double> u_axis =
-        vertical_displacements(axis_locations, system.field());
-      layer_strains.emplace_back();
-      for (unsigned int l = 0; l < stack.n_layers(); ++l)
-        layer_strains.back().push_back(
-          (u_axis[l + 1] - u_axis[l]) /
-          (axis_points[l][2] - axis_points[l + 1][2]));
+      layer_strains.push_back(centre_axis.evaluate(system.field()));
       profiles.push_back(
         vertical_displacements(profile_locations, system.field()));
       if (run.write_fields)

@@ -4,12 +4,23 @@
 namespace ssc
 {
   MechanicsModel::MechanicsModel(const Parameters &parameters, SceneRun &scene)
+    : MechanicsModel(parameters,
+                     scene.communicator(),
+                     scene.timer(),
+                     scene.pcout(),
+                     scene.timed_pcout())
+  {}
+
+
+  MechanicsModel::MechanicsModel(const Parameters   &parameters,
+                                 const MPI_Comm      mpi_communicator,
+                                 TimerOutput        &timer,
+                                 ConditionalOStream &pcout,
+                                 ConditionalOStream &timed_pcout)
   {
-    TimerOutput        &timer = scene.timer();
-    ConditionalOStream &pcout = scene.pcout();
     background_mesh = std::make_unique<BackgroundMesh>(parameters.layers,
                                                        parameters.mesh,
-                                                       scene.communicator(),
+                                                       mpi_communicator,
                                                        parameters.limits);
     {
       TimerOutput::Scope t(timer, "mesh");
@@ -24,7 +35,7 @@ namespace ssc
                                                      parameters.layers,
                                                      parameters.elasticity,
                                                      timer,
-                                                     &scene.timed_pcout());
+                                                     &timed_pcout);
     {
       TimerOutput::Scope t(timer, "setup");
       elastic_system->field().distribute_dofs();
@@ -56,6 +67,6 @@ namespace ssc
                                                *elastic_system,
                                                timer,
                                                pcout);
-    microstructure_coupling->setup(&scene.timed_pcout());
+    microstructure_coupling->setup(&timed_pcout);
   }
 } // namespace ssc

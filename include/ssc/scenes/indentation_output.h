@@ -24,6 +24,27 @@ namespace ssc
   vertical_displacements(const std::vector<PointLocation> &locations,
                          const DisplacementField          &field);
 
+  /**
+   * Each layer's compressive strain under the punch centre, as an
+   * ultrasound image on the punch's axis measures it: the change of the
+   * layer's thickness over its thickness, from u_z at the layer interfaces
+   * on x = y = 0 (located once, evaluated per state).
+   */
+  class CentreAxisStrains
+  {
+  public:
+    CentreAxisStrains(const LayerStack &stack, const PointLocator &locator);
+
+    /// The strains of the current state of @p field, from the top layer
+    /// down (collective).
+    std::vector<double>
+    evaluate(const DisplacementField &field) const;
+
+  private:
+    std::vector<Point<3>>      interfaces;
+    std::vector<PointLocation> locations;
+  };
+
   /// Writes surface_profile.csv: x, then u_z per load step.
   void
   write_surface_profile(const PunchParameters                  &punch,

@@ -27,6 +27,15 @@ namespace ssc
     /// Builds the model of @p parameters, timed and reported by @p scene.
     MechanicsModel(const Parameters &parameters, SceneRun &scene);
 
+    /// The same on @p mpi_communicator, timed by @p timer, reported on
+    /// @p pcout (and on @p timed_pcout what depends on timing): for models
+    /// a scene builds many of (the identification's forward solves).
+    MechanicsModel(const Parameters   &parameters,
+                   const MPI_Comm      mpi_communicator,
+                   TimerOutput        &timer,
+                   ConditionalOStream &pcout,
+                   ConditionalOStream &timed_pcout);
+
     BackgroundMesh &
     mesh()
     {
