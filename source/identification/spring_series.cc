@@ -16,45 +16,6 @@ namespace ssc
 {
   using namespace dealii;
 
-  namespace
-  {
-    /// The springs, from the top.
-    const char *const layer_names[] = {"skin", "fat", "muscle"};
-
-    std::array<double, 3>
-    thicknesses(const IndentationTrial &trial)
-    {
-      return {
-        {trial.skin_thickness, trial.fat_thickness, trial.muscle_thickness}};
-    }
-
-    std::array<double, 3>
-    measured_strains(const IndentationTrial &trial)
-    {
-      return {{trial.skin_strain, trial.fat_strain, trial.muscle_strain}};
-    }
-
-    double
-    median(std::vector<double> values)
-    {
-      Assert(!values.empty(), ExcInternalError());
-      const std::size_t n = values.size();
-      std::nth_element(values.begin(), values.begin() + n / 2, values.end());
-      const double upper = values[n / 2];
-      if (n % 2 == 1)
-        return upper;
-      return 0.5 * (upper +
-                    *std::max_element(values.begin(), values.begin() + n / 2));
-    }
-
-    double
-    relative_error_pct(const double predicted, const double measured)
-    {
-      return 100. * std::abs(predicted - measured) / std::abs(measured);
-    }
-  } // namespace
-
-
   SpringSeriesModel::SpringSeriesModel(const std::array<double, 3> &moduli)
     : layer_moduli(moduli)
   {
@@ -76,7 +37,7 @@ namespace ssc
     Vector<double>     compliance_times_area(trials.size());
     for (unsigned int j = 0; j < trials.size(); ++j)
       {
-        const auto t = thicknesses(trials[j]);
+        const auto t = trials[j].layer_thicknesses();
         for (unsigned int i = 0; i < 3; ++i)
           design(j, i) = t[i];
         compliance_times_area(j) =
@@ -90,7 +51,7 @@ namespace ssc
       {
         std::ostringstream message;
         message << "Springs in series: the fitted compliance of the "
-                << layer_names[i] << " layer is " << layer_compliances(i)
+                << trial_layer_names[i] << " layer is " << layer_compliances(i)
                 << " mm^2/N, not positive: these " << trials.size()
                 << " trials do not determine its modulus.";
         AssertThrow(layer_compliances(i) > 0, ExcMessage(message.str()));
@@ -111,7 +72,7 @@ namespace ssc
     for (const auto &trial : trials)
       {
         const double pressure = trial.max_force / trial.probe_area;
-        const auto   strains  = measured_strains(trial);
+        const auto   strains  = trial.layer_strains();
         for (unsigned int i = 0; i < 3; ++i)
           strain_times_pressure[i] += strains[i] * pressure;
         pressure_squared += pressure * pressure;
@@ -121,7 +82,7 @@ namespace ssc
       {
         AssertThrow(strain_times_pressure[i] > 0,
                     ExcMessage(std::string("Springs in series: the ") +
-                               layer_names[i] +
+                               trial_layer_names[i] +
                                " layer's strains do not grow with the "
                                "pressure in these trials; its modulus is "
                                "undetermined."));
@@ -134,7 +95,7 @@ namespace ssc
   double
   SpringSeriesModel::stiffness(const IndentationTrial &trial) const
   {
-    const auto t          = thicknesses(trial);
+    const auto t          = trial.layer_thicknesses();
     double     compliance = 0; // mm per MPa of pressure
     for (unsigned int i = 0; i < 3; ++i)
       compliance += t[i] / layer_moduli[i];
@@ -187,30 +148,12 @@ namespace ssc
   }
 
 
-  PredictionErrors
-  prediction_errors(const SpringSeriesModel             &model,
-                    const std::vector<IndentationTrial> &trials)
+  std::vector<TrialPrediction>
+  SpringSeriesModel::predict(const std::vector<IndentationTrial> &trials) const
   {
-    std::vector<double>                stiffness, pooled;
-    std::array<std::vector<double>, 3> per_layer;
+    std::vector<TrialPrediction> predictions;
     for (const auto &trial : trials)
-      {
-        stiffness.push_back(
-          relative_error_pct(model.stiffness(trial), trial.surface_stiffness));
-        const auto predicted = model.layer_strains(trial);
-        const auto measured  = measured_strains(trial);
-        for (unsigned int i = 0; i < 3; ++i)
-          {
-            per_layer[i].push_back(
-              relative_error_pct(predicted[i], measured[i]));
-            pooled.push_back(per_layer[i].back());
-          }
-      }
-    PredictionErrors errors;
-    errors.stiffness_pct = median(stiffness);
-    for (unsigned int i = 0; i < 3; ++i)
-      errors.layer_strain_pct[i] = median(per_layer[i]);
-    errors.pooled_layer_strain_pct = median(pooled);
-    return errors;
+      predictions.push_back({stiffness(trial), layer_strains(trial)});
+    return predictions;
   }
 } // namespace ssc

@@ -1,11 +1,17 @@
 #ifndef ssc_identification_indentation_trials_h
 #define ssc_identification_indentation_trials_h
 
+#include <array>
 #include <string>
 #include <vector>
 
 namespace ssc
 {
+  /// The layers of a trial, from the top, as the data and the
+  /// identification name them.
+  inline constexpr std::array<const char *, 3> trial_layer_names{
+    {"skin", "fat", "muscle"}};
+
   /**
    * One in vivo probe indentation trial of the MULTIS study
    * (data/multis/README.md): the layer thicknesses under the probe, the
@@ -36,6 +42,20 @@ namespace ssc
 
     /// Slope of the force against the total displacement, N/mm.
     double surface_stiffness = 0;
+
+    /// Skin, fat, muscle thickness, mm.
+    std::array<double, 3>
+    layer_thicknesses() const
+    {
+      return {{skin_thickness, fat_thickness, muscle_thickness}};
+    }
+
+    /// Skin, fat, muscle compressive strain at max_force.
+    std::array<double, 3>
+    layer_strains() const
+    {
+      return {{skin_strain, fat_strain, muscle_strain}};
+    }
 
     /// Skin surface to bone, mm.
     double

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <ssc/identification/indentation_trials.h>
+#include <ssc/identification/prediction_errors.h>
 
 namespace ssc
 {
@@ -49,6 +50,10 @@ namespace ssc
     std::array<double, 3>
     layer_strains(const IndentationTrial &trial) const;
 
+    /// Both for each of @p trials.
+    std::vector<TrialPrediction>
+    predict(const std::vector<IndentationTrial> &trials) const;
+
   private:
     std::array<double, 3> layer_moduli;
   };
@@ -72,20 +77,13 @@ namespace ssc
                    const double                         training_fraction,
                    const unsigned int                   seed);
 
-  /// Median absolute relative errors (%) of predicted against measured
-  /// values: the surface stiffness, and each layer's strain (skin, fat,
-  /// muscle) and all three pooled.
-  struct PredictionErrors
-  {
-    double                stiffness_pct = 0;
-    std::array<double, 3> layer_strain_pct{};
-    double                pooled_layer_strain_pct = 0;
-  };
-
   /// The spring model's errors on @p trials.
-  PredictionErrors
+  inline PredictionErrors
   prediction_errors(const SpringSeriesModel             &model,
-                    const std::vector<IndentationTrial> &trials);
+                    const std::vector<IndentationTrial> &trials)
+  {
+    return prediction_errors(model.predict(trials), trials);
+  }
 } // namespace ssc
 
 #endif
