@@ -10,6 +10,7 @@
 #include <ssc/parameters.h>
 #include <ssc/scenes/geometry_scene.h>
 #include <ssc/scenes/growth_scene.h>
+#include <ssc/scenes/identification_scene.h>
 #include <ssc/scenes/indentation_scene.h>
 
 namespace ssc
@@ -168,6 +169,9 @@ namespace ssc
                 break;
               case SceneKind::geometry:
                 GeometryScene(parameters, mpi_communicator).run();
+                break;
+              case SceneKind::identification:
+                IdentificationScene(parameters, mpi_communicator).run();
                 break;
             }
           return 0;

@@ -139,6 +139,7 @@ namespace ssc
     embedded.add_parameters(handler);
     newton.add_parameters(handler);
     limits.add_parameters(handler);
+    identification.add_parameters(handler);
   }
 
 
@@ -183,11 +184,14 @@ namespace ssc
     embedded       = EmbeddedParameters();
     newton         = NewtonParameters();
     limits         = ResourceLimits();
+    identification = IdentificationParameters();
     add_parameters(prm, names);
     if (!file.empty())
       parse_with_includes(prm, file, /*skip_undefined=*/false);
     for (const auto &o : overrides)
       apply_override(prm, o);
+    parameter_file    = file;
+    applied_overrides = overrides;
     finalise();
     check_consistency();
   }
@@ -205,6 +209,7 @@ namespace ssc
     microstructure.check();
     embedded.check();
     newton.check();
+    identification.check();
   }
 
 
@@ -246,12 +251,14 @@ namespace ssc
                                "finite-strain layers."));
     if (mesh.symmetry == MeshSymmetry::quarter)
       AssertThrow(mesh.layout == MeshLayout::box &&
-                    run.scene == SceneKind::indentation &&
+                    (run.scene == SceneKind::indentation ||
+                     run.scene == SceneKind::identification) &&
                     !microstructure.lobules && !microstructure.ligaments &&
                     !punch.edge_contact,
                   ExcMessage("Mesh/Symmetry = quarter needs a problem "
                              "symmetric about the planes x = 0 and y = 0: "
-                             "the indentation scene on the box layout, "
+                             "the indentation (or identification) scene on "
+                             "the box layout, "
                              "without Microstructure/Lobules or Ligaments "
                              "and without Punch/Edge contact."));
     AssertThrow(!punch.edge_contact || layers.nonlinear(),
@@ -320,6 +327,34 @@ namespace ssc
                  "body.";
         AssertThrow(punch.control == PunchControl::force || punch.depth < stack,
                     ExcMessage(depth.str()));
+      }
+    if (run.scene == SceneKind::identification)
+      {
+        AssertThrow(!identification.data_file.empty(),
+                    ExcMessage("Run/Scene = identification needs "
+                               "Identification/Data file (the in vivo "
+                               "trials, e.g. data/multis/"
+                               "indentation_trials.csv)."));
+        // the forward model is the trial's skin, fat and muscle, linear:
+        // one solve per trial and moduli, homogeneous of degree one in them
+        AssertThrow(layers.n_layers() == 3,
+                    ExcMessage("Run/Scene = identification: the Layer stack "
+                               "must list exactly three layers, skin, fat "
+                               "and muscle from the top (the data's), not " +
+                               std::to_string(layers.n_layers()) + "."));
+        for (unsigned int l = 0; l < 3; ++l)
+          AssertThrow(layers.layer(l).model == MaterialModel::linear,
+                      ExcMessage("Run/Scene = identification fits the moduli "
+                                 "of a linear model (one solve per trial "
+                                 "and moduli): set Layer stack/" +
+                                 layers.layer(l).name +
+                                 "/Material model = linear."));
+        AssertThrow(punch.shape == PunchShape::rectangle &&
+                      punch.control == PunchControl::force,
+                    ExcMessage("Run/Scene = identification presses the "
+                               "trial's flat probe with its force: set "
+                               "Punch/Shape = rectangle and Punch/Control = "
+                               "force."));
       }
     check_model_size(*this);
   }

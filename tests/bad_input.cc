@@ -307,6 +307,82 @@ main(int argc, char **argv)
     check("an include fan-out", "include fan1.prm\n");
   }
 
+  {
+    // the identification: a valid set-up, then one fault at a time
+    std::ifstream data(SOURCE_DIR "/data/multis_small.csv");
+    std::string   header, row;
+    std::getline(data, header);
+    std::ofstream odd_probe("odd_probe.csv");
+    odd_probe << header << '\n';
+    for (unsigned int k = 0; k < 3 && std::getline(data, row); ++k)
+      {
+        // the last column, maxForce_normArea, gives the probe area: make it
+        // 500 mm^2 (MaxForce is the tenth column)
+        std::vector<std::string> fields;
+        std::stringstream        line(row);
+        for (std::string field; std::getline(line, field, ',');)
+          fields.push_back(field);
+        fields.back() = std::to_string(std::stod(fields[9]) / 500.);
+        for (unsigned int i = 0; i < fields.size(); ++i)
+          odd_probe << (i > 0 ? "," : "") << fields[i];
+        odd_probe << '\n';
+      }
+    odd_probe.close();
+    const std::string identification =
+      "subsection Run\n  set Scene = identification\n"
+      "  set Output directory = results\nend\n"
+      "subsection Layer stack\n  set Layers = skin, fat, muscle\n"
+      "  subsection skin\n    set Material model = linear\n  end\n"
+      "  subsection fat\n    set Kind = SAT\n"
+      "    set Material model = linear\n  end\n"
+      "  subsection muscle\n    set Kind = deep\n"
+      "    set Material model = linear\n  end\nend\n"
+      "subsection Punch\n  set Shape = rectangle\n  set Length = 45\n"
+      "  set Width = 8\n  set Control = force\nend\n";
+    std::filesystem::copy_file(
+      SOURCE_DIR "/data/multis_small.csv",
+      "small.csv",
+      std::filesystem::copy_options::overwrite_existing);
+    const std::vector<std::string> with_data = {
+      "-s", "Identification/Data file=small.csv"};
+    const auto with = [&with_data](const std::string &setting) {
+      std::vector<std::string> arguments = with_data;
+      arguments.insert(arguments.end(), {"-s", setting});
+      return arguments;
+    };
+    check("identification without a data file", identification);
+    check("identification data file missing",
+          identification,
+          {"-s", "Identification/Data file=no_such.csv"});
+    check("identification of a site not in the data",
+          identification,
+          with("Identification/Sites=XX_Y"));
+    check("identification with all subjects in training",
+          identification,
+          with("Identification/Training fraction=1"));
+    check("identification with fewer data than moduli",
+          identification,
+          with("Identification/Fitted data=stiffness"));
+    check("identification of a finite-strain model",
+          identification,
+          with("Layer stack/fat/Material model=neo-Hookean"));
+    std::string two_layers = identification;
+    two_layers.replace(two_layers.find("skin, fat, muscle"), 17, "skin, fat");
+    two_layers.erase(two_layers.find("  subsection muscle"),
+                     two_layers.find("end\nsubsection Punch") -
+                       two_layers.find("  subsection muscle"));
+    check("identification of two layers", two_layers, with_data);
+    check("identification of a circular punch",
+          identification,
+          with("Punch/Shape=circle"));
+    check("identification with an unknown probe face",
+          identification,
+          {"-s",
+           "Identification/Data file=odd_probe.csv",
+           "-s",
+           "Identification/Sites=LA_A"});
+  }
+
   check("missing include", "include no_such_region.prm\n");
   check("include inside a subsection",
         "subsection Mesh\n  include other.prm\nend\n");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <ssc/base/resource_limits.h>
+#include <ssc/identification/identification_parameters.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/embedded_parameters.h>
 #include <ssc/mesh/layer_stack.h>
@@ -84,6 +85,22 @@ namespace ssc
     EmbeddedParameters       embedded;
     NewtonParameters         newton;
     ResourceLimits           limits;
+    IdentificationParameters identification;
+
+    /// The parameter file read (empty if none) and the overrides applied:
+    /// a scene that runs variants of its own model (the identification's
+    /// forward solves) reads them again with overrides of its own.
+    const std::string &
+    file() const
+    {
+      return parameter_file;
+    }
+
+    const std::vector<std::string> &
+    overrides() const
+    {
+      return applied_overrides;
+    }
 
   private:
     /// Declares every section, bound to the members, with one section per
@@ -101,7 +118,9 @@ namespace ssc
     void
     check_consistency() const;
 
-    ParameterHandler prm;
+    ParameterHandler         prm;
+    std::string              parameter_file;
+    std::vector<std::string> applied_overrides;
   };
 } // namespace ssc
 

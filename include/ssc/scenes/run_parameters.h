@@ -17,15 +17,17 @@ namespace ssc
   {
     indentation,
     growth,
-    geometry
+    geometry,
+    identification
   };
 
-  constexpr std::array<std::pair<SceneKind, const char *>, 3>
+  constexpr std::array<std::pair<SceneKind, const char *>, 4>
   enum_table(SceneKind)
   {
     return {{{SceneKind::indentation, "indentation"},
              {SceneKind::growth, "growth"},
-             {SceneKind::geometry, "geometry"}}};
+             {SceneKind::geometry, "geometry"},
+             {SceneKind::identification, "identification"}}};
   }
 
   /// Section "Run": which scene, where its results go.
