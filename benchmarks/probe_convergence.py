@@ -66,7 +66,9 @@ def run_ssc(nu, mesh, folder):
             "-s", f"Elasticity/Degree={degree}",
             "-s", f"Mesh/Cell size={h}", "-s", f"Mesh/Grading ratio={grading}",
             "-s", f"Mesh/Core edge cell size={edge}",
-            "-s", "Mesh/Symmetry=quarter"]
+            "-s", "Mesh/Symmetry=quarter",
+            # CalculiX's block (prm/probe_indentation.prm now has a larger one)
+            "-s", "Mesh/Patch length x=105", "-s", "Mesh/Patch length y=68"]
     for layer, n in zip(LAYERS, across):
         args += ["-s", f"Layer stack/{layer}/Material model=linear",
                  "-s", f"Layer stack/{layer}/Young's modulus={MODULI[layer]}",
