@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <limits>
 
+#include <ssc/base/round_robin.h>
 #include <ssc/identification/layer_moduli_fit.h>
 
 #include <Eigen/Dense>
@@ -18,6 +19,26 @@ namespace ssc
   {
     /// Step of the log-moduli for the finite-difference sensitivities.
     constexpr double log_step = 1e-3;
+
+    /// A response as the four numbers the ranks exchange (stiffness, the
+    /// strains per newton), and back.
+    void
+    write(const ProbeResponse &response, double *out)
+    {
+      out[0] = response.stiffness;
+      for (unsigned int i = 0; i < 3; ++i)
+        out[i + 1] = response.strains_per_newton[i];
+    }
+
+    ProbeResponse
+    read(const double *in)
+    {
+      ProbeResponse response;
+      response.stiffness = in[0];
+      for (unsigned int i = 0; i < 3; ++i)
+        response.strains_per_newton[i] = in[i + 1];
+      return response;
+    }
 
     /// The forward responses of every trial at one set of moduli: the
     /// unperturbed one, then (with sensitivities) skin and fat perturbed.
@@ -176,39 +197,29 @@ namespace ssc
           cached_x.size() == x.size() && (cached_x - x).norm() == 0;
         if (same_point && (cached_sensitivities || !sensitivities))
           return cached;
-        const unsigned int rank =
-          Utilities::MPI::this_mpi_process(communicator);
-        const unsigned int n_ranks =
-          Utilities::MPI::n_mpi_processes(communicator);
-        const unsigned int  n_cases = sensitivities ? 3 : 1;
-        const unsigned int  first   = same_point ? 1 : 0;
-        std::vector<double> packed(trials.size() * 3 * 4, 0.);
-        const auto          E = moduli(x);
-        for (unsigned int t = rank; t < trials.size(); t += n_ranks)
-          for (unsigned int c = first; c < n_cases; ++c)
-            {
-              auto perturbed = E;
-              if (c > 0)
-                perturbed[c - 1] *= std::exp(log_step);
-              const ProbeResponse p   = model.solve(trials[t], perturbed);
-              double             *out = &packed[(t * 3 + c) * 4];
-              out[0]                  = p.stiffness;
-              for (unsigned int i = 0; i < 3; ++i)
-                out[i + 1] = p.strains_per_newton[i];
-            }
-        Utilities::MPI::sum(packed, communicator, packed);
+        const unsigned int n_cases = sensitivities ? 3 : 1;
+        const unsigned int first   = same_point ? 1 : 0;
+        const auto         E       = moduli(x);
+        const auto         values =
+          compute_round_robin(trials.size(),
+                              3 * 4,
+                              communicator,
+                              [&](const unsigned int t, double *out) {
+                                for (unsigned int c = first; c < n_cases; ++c)
+                                  {
+                                    auto perturbed = E;
+                                    if (c > 0)
+                                      perturbed[c - 1] *= std::exp(log_step);
+                                    write(model.solve(trials[t], perturbed),
+                                          out + 4 * c);
+                                  }
+                              });
         n_solves += trials.size() * (n_cases - first);
         if (!same_point)
           cached.per_trial.assign(trials.size(), {});
         for (unsigned int t = 0; t < trials.size(); ++t)
           for (unsigned int c = first; c < n_cases; ++c)
-            {
-              const double  *in = &packed[(t * 3 + c) * 4];
-              ProbeResponse &p  = cached.per_trial[t][c];
-              p.stiffness       = in[0];
-              for (unsigned int i = 0; i < 3; ++i)
-                p.strains_per_newton[i] = in[i + 1];
-            }
+            cached.per_trial[t][c] = read(&values[(t * 3 + c) * 4]);
         cached_x             = x;
         cached_sensitivities = sensitivities;
         return cached;
@@ -348,25 +359,21 @@ namespace ssc
   LayerModuliFit::predict(const std::vector<IndentationTrial> &trials,
                           const std::array<double, 3>         &moduli) const
   {
-    const unsigned int rank =
-      Utilities::MPI::this_mpi_process(mpi_communicator);
-    const unsigned int n_ranks =
-      Utilities::MPI::n_mpi_processes(mpi_communicator);
-    std::vector<double> packed(trials.size() * 4, 0.);
-    for (unsigned int t = rank; t < trials.size(); t += n_ranks)
-      {
-        const ProbeResponse p = model.solve(trials[t], moduli);
-        packed[4 * t]         = p.stiffness;
-        for (unsigned int i = 0; i < 3; ++i)
-          packed[4 * t + 1 + i] = trials[t].max_force * p.strains_per_newton[i];
-      }
-    Utilities::MPI::sum(packed, mpi_communicator, packed);
+    const auto values =
+      compute_round_robin(trials.size(),
+                          4,
+                          mpi_communicator,
+                          [&](const unsigned int t, double *out) {
+                            write(model.solve(trials[t], moduli), out);
+                          });
     std::vector<TrialPrediction> predictions(trials.size());
     for (unsigned int t = 0; t < trials.size(); ++t)
       {
-        predictions[t].stiffness = packed[4 * t];
+        const ProbeResponse response = read(&values[4 * t]);
+        predictions[t].stiffness     = response.stiffness;
         for (unsigned int i = 0; i < 3; ++i)
-          predictions[t].layer_strains[i] = packed[4 * t + 1 + i];
+          predictions[t].layer_strains[i] =
+            trials[t].max_force * response.strains_per_newton[i];
       }
     return predictions;
   }

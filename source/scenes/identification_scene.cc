@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include <ssc/base/round_robin.h>
 #include <ssc/identification/layer_moduli_fit.h>
 #include <ssc/identification/probe_forward_model.h>
 #include <ssc/identification/spring_series.h>
@@ -92,10 +93,6 @@ namespace ssc
                      const std::array<double, 3>         &population,
                      const MPI_Comm                       mpi_communicator)
     {
-      const unsigned int rank =
-        Utilities::MPI::this_mpi_process(mpi_communicator);
-      const unsigned int n_ranks =
-        Utilities::MPI::n_mpi_processes(mpi_communicator);
       IdentificationParameters own_parameters = parameters;
       const auto               layers         = parameters.fitted_layers();
       const auto               data = parameters.fitted_measurements();
@@ -110,26 +107,32 @@ namespace ssc
                              "determine it."));
       const LayerModuliFit own(model, own_parameters, MPI_COMM_SELF);
       ConditionalOStream   silent(std::cout, false);
-      std::vector<double>  packed(4 * trials.size(), 0.);
-      for (unsigned int t = rank; t < trials.size(); t += n_ranks)
-        try
-          {
-            const ModuliFit fit = own.fit({trials[t]}, population, silent);
-            for (unsigned int l = 0; l < 3; ++l)
-              packed[4 * t + l] = fit.moduli[l];
-            packed[4 * t + 3] = fit.converged;
-          }
-        catch (const std::exception &)
-          {
-            // a forward model the fit drove out of range: no fit
-            for (unsigned int l = 0; l < 3; ++l)
-              packed[4 * t + l] = std::numeric_limits<double>::quiet_NaN();
-          }
-      Utilities::MPI::sum(packed, mpi_communicator, packed);
+      const auto           values =
+        compute_round_robin(trials.size(),
+                            4,
+                            mpi_communicator,
+                            [&](const unsigned int t, double *out) {
+                              try
+                                {
+                                  const ModuliFit fit =
+                                    own.fit({trials[t]}, population, silent);
+                                  for (unsigned int l = 0; l < 3; ++l)
+                                    out[l] = fit.moduli[l];
+                                  out[3] = fit.converged;
+                                }
+                              catch (const std::exception &)
+                                {
+                                  // a forward model the fit drove out of range:
+                                  // no fit
+                                  for (unsigned int l = 0; l < 3; ++l)
+                                    out[l] =
+                                      std::numeric_limits<double>::quiet_NaN();
+                                }
+                            });
       std::vector<std::array<double, 4>> rows(trials.size());
       for (unsigned int t = 0; t < trials.size(); ++t)
         for (unsigned int k = 0; k < 4; ++k)
-          rows[t][k] = packed[4 * t + k];
+          rows[t][k] = values[4 * t + k];
       return rows;
     }
 
