@@ -8,6 +8,7 @@
 // gets its case here.
 
 #include <cmath>
+#include <iomanip>
 #include <random>
 
 #include <ssc/materials/layer_materials.h>
@@ -158,5 +159,32 @@ main(int argc, char **argv)
         error = std::max(error, std::abs(difference.access_raw_entry(k)));
       deallog << name << ": small-strain tangent 2 mu (I^s - 1/3 1 (x) 1): "
               << (error < 1e-12 * mu ? "yes" : "no") << std::endl;
+    }
+
+  // both volumetric energies: U' and U'' are the derivatives of U, and U
+  // is kappa/2 (J - 1)^2 to second order (the two forms differ at third)
+  for (const auto form : {ssc::VolumetricEnergyForm::logarithmic,
+                          ssc::VolumetricEnergyForm::quadratic})
+    {
+      const ssc::VolumetricEnergy U(2.5, form);
+      const std::string           name       = ssc::to_string(form);
+      const double                h          = 1e-6;
+      bool                        consistent = true;
+      for (const double J : {0.3, 0.8, 1.0, 1.4})
+        {
+          const double dU =
+            (U.volumetric_energy(J + h) - U.volumetric_energy(J - h)) / (2 * h);
+          const double d2U = (U.pressure(J + h) - U.pressure(J - h)) / (2 * h);
+          consistent =
+            consistent && std::abs(dU - U.pressure(J)) < 1e-6 * U.kappa &&
+            std::abs(d2U - U.pressure_derivative(J)) < 1e-6 * U.kappa;
+        }
+      const double e     = 1e-3;
+      const double ratio = U.volumetric_energy(1 + e) / (0.5 * U.kappa * e * e);
+      deallog << name << " U(J): derivatives consistent: "
+              << (consistent ? "yes" : "no") << "; U(1 + e) / (kappa/2 e^2) "
+              << "- 1 at e = 1e-3: " << std::setprecision(2)
+              << (std::abs(ratio - 1.) < 1e-9 ? 0. : ratio - 1.)
+              << std::setprecision(6) << std::endl;
     }
 }

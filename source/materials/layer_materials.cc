@@ -14,9 +14,11 @@ namespace ssc
         case MaterialModel::linear:
           return std::make_unique<LinearElasticMaterial>(moduli);
         case MaterialModel::corotational:
-          return std::make_unique<CorotationalMaterial>(moduli);
+          return std::make_unique<CorotationalMaterial>(
+            moduli, layer.volumetric_energy);
         case MaterialModel::neo_hookean:
-          return std::make_unique<NeoHookeanMaterial>(moduli);
+          return std::make_unique<NeoHookeanMaterial>(moduli,
+                                                      layer.volumetric_energy);
       }
     AssertThrow(false, ExcMessage("Unknown material model."));
     return nullptr;

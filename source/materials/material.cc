@@ -4,9 +4,10 @@
 
 namespace ssc
 {
-  Material::Material(const IsotropicModuli &moduli)
+  Material::Material(const IsotropicModuli     &moduli,
+                     const VolumetricEnergyForm volumetric_form)
     : reference_moduli(moduli)
-    , volumetric_energy(moduli.bulk_modulus)
+    , volumetric_energy(moduli.bulk_modulus, volumetric_form)
   {}
 
 

@@ -179,6 +179,14 @@ namespace ssc
                           "strain, isochoric/volumetric split with the same "
                           "small-strain moduli); any nonlinear layer makes the "
                           "scene solve with Newton's method and load steps.");
+        prm.add_parameter(
+          "Volumetric energy",
+          layer.volumetric_energy,
+          "Finite-strain laws: U(J) = kappa/4 (J^2 - 1 - 2 ln J) "
+          "(logarithmic) or kappa/2 (J - 1)^2 (quadratic, the NEO HOOKE of "
+          "CalculiX and Abaqus with D1 = 2/kappa). Equal to second order "
+          "in J - 1; at nu = 0.49 a punch drives the fat far enough from J "
+          "= 1 for the choice to show.");
         prm.add_parameter("Grading",
                           layer.grading,
                           "Ratio of successive cell heights from the top of "

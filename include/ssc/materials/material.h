@@ -43,7 +43,9 @@ namespace ssc
   class Material
   {
   public:
-    explicit Material(const IsotropicModuli &moduli);
+    explicit Material(const IsotropicModuli     &moduli,
+                      const VolumetricEnergyForm volumetric_form =
+                        VolumetricEnergyForm::logarithmic);
 
     virtual ~Material() = default;
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <ssc/base/enum_table.h>
+#include <ssc/materials/volumetric_energy.h>
 
 namespace ssc
 {
@@ -81,7 +82,8 @@ namespace ssc
     /// Height-to-width ratio of the lobules (> 1: palisade-like SAT).
     double lobule_stretch = 1;
     /// Small-strain linear elasticity or compressible neo-Hookean.
-    MaterialModel model = MaterialModel::linear;
+    MaterialModel        model             = MaterialModel::linear;
+    VolumetricEnergyForm volumetric_energy = VolumetricEnergyForm::logarithmic;
 
     /// Whether this layer can carry lobules (kind SAT or DAT).
     bool
