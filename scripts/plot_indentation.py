@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Plots an indentation run: force-depth (with the published forearm
-reference band), the surface profile u_z(x) along y = 0, and the section
-y = 0 (vertical displacement and von Mises stress at the last load step).
+reference band and the depths' discretisation error where the run
+reports one), the deformed surface profile along y = 0, and the section
+y = 0 in the deformed configuration (vertical displacement and von Mises
+stress at the last load step, with layer interfaces, septa and punch).
 
     /usr/bin/python3 scripts/plot_indentation.py output/forearm_indentation
 
@@ -36,8 +38,14 @@ def main():
 
     # force-depth
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    ax.plot(depth, force, "o-", label=f"ssc ({summary['contact']}, "
-            f"k = {summary['stiffness_N_per_mm']:.4f} N/mm)")
+    label = (f"ssc ({summary['contact']}, "
+             f"k = {summary['stiffness_N_per_mm']:.4f} N/mm)")
+    if "depth_uncertainty_mm" in summary:
+        error = np.array(summary["depth_uncertainty_mm"], dtype=float)
+        ax.errorbar(depth, force, xerr=error, fmt="o-", capsize=3,
+                    label=label + ", discretisation error")
+    else:
+        ax.plot(depth, force, "o-", label=label)
     if os.path.exists(REFERENCE):
         header, rows = read_csv(REFERENCE)
         for r in rows:
@@ -78,33 +86,60 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(run, "surface_profile.png"), dpi=110)
 
-    # section y = 0
+    # section y = 0, in the deformed configuration
     section = os.path.join(run, "section.csv")
     if os.path.exists(section):
-        header, rows = read_csv(section)
-        v = rows.astype(float)
-        x, z = v[:, 0], v[:, 1]
-        nx = len(np.unique(x))
-        shape = (nx, len(x) // nx)
-        X, Z = x.reshape(shape), z.reshape(shape)
-        fig, ax = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
-        c0 = ax[0].contourf(X, Z, v[:, 4].reshape(shape), 30, cmap="viridis")
-        fig.colorbar(c0, ax=ax[0], label="u_z [mm]")
-        mises = np.maximum(v[:, 5].reshape(shape), 1e-6)
-        c1 = ax[1].contourf(X, Z, np.log10(mises), 30, cmap="magma")
-        fig.colorbar(c1, ax=ax[1], label="log10 von Mises [kPa]")
-        layer = v[:, 2].reshape(shape)
-        for a in ax:
-            a.contour(X, Z, layer, levels=np.arange(0.5, layer.max()),
-                      colors="w", linewidths=0.6)
-            a.set_ylabel("z [mm]")
-            a.set_aspect("equal")
-        ax[1].set_xlabel("x [mm]")
-        ax[0].set_title(f"section y = 0 at {force[-1]} N (reference "
-                        "configuration; white: layer interfaces)", fontsize=9)
-        fig.tight_layout()
-        fig.savefig(os.path.join(run, "section.png"), dpi=110)
+        plot_section(run, summary, force[-1], depth[-1])
 
+
+def plot_section(run, summary, force, depth):
+    """The section y = 0 at the last load: every sample point moved by its
+    displacement (finite strain: the current configuration; linear: the
+    small-strain displacement drawn at scale 1 all the same, so that an
+    impossible depth shows), coloured by u_z and von Mises stress, with the
+    deformed layer interfaces, the septa's traces and the punch."""
+    header, rows = read_csv(os.path.join(run, "section.csv"))
+    v = rows.astype(float)
+    col = {name: header.index(name) for name in header}
+    x, z = v[:, col["x_mm"]], v[:, col["z_mm"]]
+    nx = len(np.unique(x))
+    shape = (nx, len(x) // nx)
+    X = (x + v[:, col["ux_mm"]]).reshape(shape)
+    Z = (z + v[:, col["uz_mm"]]).reshape(shape)
+    uz = v[:, col["uz_mm"]].reshape(shape)
+    layer = v[:, col["layer"]].reshape(shape)
+    mises = np.maximum(v[:, col["von_mises_kPa"]].reshape(shape), 1e-6)
+    septa_file = os.path.join(run, "section_septa.csv")
+    septa = None
+    if os.path.exists(septa_file):
+        h, r = read_csv(septa_file)
+        if len(r):
+            s = r.astype(float)
+            c = {name: h.index(name) for name in h}
+            septa = (np.stack([s[:, c["x0_mm"]] + s[:, c["ux0_mm"]],
+                               s[:, c["x1_mm"]] + s[:, c["ux1_mm"]]]),
+                     np.stack([s[:, c["z0_mm"]] + s[:, c["uz0_mm"]],
+                               s[:, c["z1_mm"]] + s[:, c["uz1_mm"]]]))
+    radius = summary.get("punch_radius_mm", None)
+    fig, ax = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True)
+    panels = [(ax[0], uz, "viridis", "u_z [mm]"),
+              (ax[1], np.log10(mises), "magma", "log10 von Mises [kPa]")]
+    for a, field, cmap, label in panels:
+        m = a.pcolormesh(X, Z, field, cmap=cmap, shading="gouraud")
+        fig.colorbar(m, ax=a, label=label)
+        a.contour(X, Z, layer, levels=np.arange(0.5, layer.max()),
+                  colors="w", linewidths=0.8)
+        if septa is not None:
+            a.plot(septa[0], septa[1], "-", color="c", lw=0.5, alpha=0.8)
+        if radius is not None:
+            a.plot([-radius, radius], [-depth, -depth], "r-", lw=3)
+        a.set_ylabel("z [mm]")
+        a.set_aspect("equal")
+    ax[1].set_xlabel("x [mm]")
+    ax[0].set_title(f"section y = 0 at {force:g} N, deformed (white: layer "
+                    "interfaces, cyan: septa, red: punch)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(run, "section.png"), dpi=110)
 
 if __name__ == "__main__":
     main()

@@ -283,6 +283,14 @@ main(int argc, char **argv)
   check("a quarter model with lobules",
         valid_stack,
         {"-s", "Mesh/Symmetry=quarter", "-s", "Microstructure/Lobules=true"});
+  check("a depth uncertainty per force with the wrong count",
+        valid_stack,
+        {"-s",
+         "Punch/Control=force",
+         "-s",
+         "Punch/Forces=0.1, 0.2",
+         "-s",
+         "Punch/Depth uncertainty=0.01"});
   check("local refinements beyond the cell limit",
         std::string(valid_stack) +
           "subsection Run\n  set Output directory = results\nend\n"

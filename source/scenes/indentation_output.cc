@@ -2,12 +2,47 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include <ssc/scenes/indentation_output.h>
 
 namespace ssc
 {
+  namespace
+  {
+    /// The x range of the section (and of the surface profile).
+    std::pair<double, double>
+    section_range(const Parameters &parameters)
+    {
+      const double L = std::min(parameters.punch.profile_length,
+                                parameters.mesh.patch_length_x);
+      // a quarter model holds x >= 0 only
+      return {parameters.mesh.symmetry == MeshSymmetry::quarter ? 0. : -L / 2,
+              L / 2};
+    }
+
+
+    /// Where the triangle @p t crosses the plane y = 0: a segment, or
+    /// nothing (vertices on the plane count as y > 0, so that a triangle
+    /// touching it adds no zero-length segment).
+    std::optional<std::array<Point<3>, 2>>
+    cut_by_section(const std::array<Point<3>, 3> &t)
+    {
+      std::vector<Point<3>> ends;
+      for (unsigned int e = 0; e < 3; ++e)
+        {
+          const Point<3> &a = t[e], &b = t[(e + 1) % 3];
+          if ((a[1] < 0) != (b[1] < 0))
+            ends.push_back(a + (b - a) * (a[1] / (a[1] - b[1])));
+        }
+      if (ends.size() != 2)
+        return std::nullopt;
+      return std::array<Point<3>, 2>{{ends[0], ends[1]}};
+    }
+  } // namespace
+
+
   std::vector<Point<3>>
   profile_points(const PunchParameters &punch,
                  const double           patch_length,
@@ -91,17 +126,13 @@ namespace ssc
                 const LayerMaterials    &materials,
                 RunOutput               &output)
   {
-    const LayerStack &layers = parameters.layers;
-    const double      L =
-      std::min(parameters.punch.profile_length, parameters.mesh.patch_length_x);
+    const LayerStack &layers  = parameters.layers;
+    const auto [x_min, x_max] = section_range(parameters);
     const unsigned int    nx = 121, nz = 81;
     std::vector<Point<3>> points;
     for (unsigned int i = 0; i < nx; ++i)
       {
-        // a quarter model holds x >= 0 only
-        const double x = parameters.mesh.symmetry == MeshSymmetry::quarter ?
-                           L / 2 * i / (nx - 1) :
-                           -L / 2 + L * i / (nx - 1);
+        const double x = x_min + (x_max - x_min) * i / (nx - 1);
         const double bottom =
           layers.depth_of_interface(layers.n_layers(), x, 0.);
         for (unsigned int k = 0; k < nz; ++k)
@@ -126,6 +157,43 @@ namespace ssc
             << ',' << u[k][2] << ',' << 1e3 * mises << '\n';
       }
     output.write_text("section.csv", csv.str());
+  }
+
+
+
+  void
+  write_septa_section(const Parameters        &parameters,
+                      const Microstructure    &microstructure,
+                      const PointLocator      &locator,
+                      const DisplacementField &field,
+                      RunOutput               &output)
+  {
+    const auto [x_min, x_max] = section_range(parameters);
+    std::vector<Point<3>>     ends;
+    std::vector<unsigned int> layers;
+    for (const Septum &septum : microstructure.septa())
+      for (const auto &triangle : septum.triangles)
+        if (const auto segment = cut_by_section(triangle))
+          if (std::min((*segment)[0][0], (*segment)[1][0]) >= x_min &&
+              std::max((*segment)[0][0], (*segment)[1][0]) <= x_max)
+            {
+              ends.insert(ends.end(), segment->begin(), segment->end());
+              layers.push_back(septum.layer);
+            }
+    std::vector<Tensor<1, 3>> u;
+    std::vector<Tensor<2, 3>> gradient;
+    field.evaluate_at(locator.locate(ends), u, gradient);
+    std::ostringstream csv;
+    csv << "layer,x0_mm,z0_mm,x1_mm,z1_mm,ux0_mm,uz0_mm,ux1_mm,uz1_mm\n"
+        << std::setprecision(7);
+    for (unsigned int s = 0; s < layers.size(); ++s)
+      {
+        const unsigned int k = 2 * s;
+        csv << layers[s] << ',' << ends[k][0] << ',' << ends[k][2] << ','
+            << ends[k + 1][0] << ',' << ends[k + 1][2] << ',' << u[k][0] << ','
+            << u[k][2] << ',' << u[k + 1][0] << ',' << u[k + 1][2] << '\n';
+      }
+    output.write_text("section_septa.csv", csv.str());
   }
 
 

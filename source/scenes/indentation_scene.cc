@@ -139,8 +139,14 @@ namespace ssc
     {
       TimerOutput::Scope t(timer, "output");
       if (punch.section)
-        write_section(
-          parameters, locator, system.field(), system.materials(), output);
+        {
+          write_section(
+            parameters, locator, system.field(), system.materials(), output);
+          if (const Microstructure *microstructure =
+                model.coupling().get_microstructure())
+            write_septa_section(
+              parameters, *microstructure, locator, system.field(), output);
+        }
       if (punch.profile_length > 0)
         write_surface_profile(punch, profile_at, loads, profiles, output);
       write_force_displacement(forces, depths, driver.statistics(), output);
@@ -200,8 +206,10 @@ namespace ssc
     summary["layer_strain_under_centre_per_step"] = strains;
     summary["force_N"]                            = forces;
     summary["depth_mm"]                           = depths;
-    summary["stiffness_N_per_mm"]                 = stiffness;
-    summary["half_space_stiffness_N_per_mm"]      = reference;
+    if (!punch.depth_uncertainty.empty())
+      summary["depth_uncertainty_mm"] = punch.depth_uncertainty;
+    summary["stiffness_N_per_mm"]            = stiffness;
+    summary["half_space_stiffness_N_per_mm"] = reference;
     if (loading.force_control() && driver.linear())
       summary["tie_force_balance_error_N"] = tie_balance;
     output.write_summary(summary);

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <string>
 
 #include <ssc/scenes/punch_parameters.h>
 
@@ -91,6 +92,17 @@ namespace ssc
                       "Punch forces of the load steps, N, increasing (force "
                       "control); the forearm measurements span 0.35-1.8 N.",
                       Patterns::List(Patterns::Double(0)));
+    prm.add_parameter(
+      "Depth uncertainty",
+      depth_uncertainty,
+      "The discretisation error (mm) of the depth at each of the Forces, "
+      "as a convergence study of this scene's mesh and elements measured "
+      "it (benchmarks/forearm_finite_strain.py for the forearm): written "
+      "beside the depths as depth_uncertainty_mm in summary.json and drawn "
+      "as error bars. Empty: not known (nothing is written). It belongs to "
+      "the parameter set it was measured for: the study says when it has "
+      "to be measured again.",
+      Patterns::List(Patterns::Double(0)));
     prm.add_parameter("Profile length",
                       profile_length,
                       "Length (mm) of the line y = 0 through the punch "
@@ -154,8 +166,19 @@ namespace ssc
           AssertThrow(forces[k] > 0 && (k == 0 || forces[k] > forces[k - 1]),
                       ExcMessage("Punch/Forces must be positive and "
                                  "increasing (N)."));
+        AssertThrow(depth_uncertainty.empty() ||
+                      depth_uncertainty.size() == forces.size(),
+                    ExcMessage("Punch/Depth uncertainty needs one value per "
+                               "force of Punch/Forces (" +
+                               std::to_string(forces.size()) + "), not " +
+                               std::to_string(depth_uncertainty.size()) +
+                               "; empty if not known."));
       }
     else
+      AssertThrow(depth_uncertainty.empty(),
+                  ExcMessage("Punch/Depth uncertainty belongs to force "
+                             "control (one value per force)."));
+    if (control == PunchControl::displacement)
       AssertThrow(depth > 0,
                   ExcMessage("Punch/Depth must be positive (mm) under "
                              "displacement control."));

@@ -6,6 +6,7 @@
 #include <ssc/embedding/point_locator.h>
 #include <ssc/materials/layer_materials.h>
 #include <ssc/mechanics/displacement_field.h>
+#include <ssc/microstructure/microstructure.h>
 #include <ssc/output/run_output.h>
 #include <ssc/parameters.h>
 #include <ssc/scenes/quasi_static_driver.h>
@@ -61,6 +62,20 @@ namespace ssc
                 const DisplacementField &field,
                 const LayerMaterials    &materials,
                 RunOutput               &output);
+
+  /**
+   * Writes section_septa.csv: the septa's traces in the section plane
+   * y = 0 (where each septum triangle crosses it, within the section's
+   * x range), one segment per row with the displacement of its two ends,
+   * so that the section can be drawn in the deformed configuration with
+   * the lobule walls in it.
+   */
+  void
+  write_septa_section(const Parameters        &parameters,
+                      const Microstructure    &microstructure,
+                      const PointLocator      &locator,
+                      const DisplacementField &field,
+                      RunOutput               &output);
 
   /// Writes force_displacement.csv: per step force, depth and what the
   /// solvers did.

@@ -60,20 +60,21 @@ namespace ssc
   /// A rigid flat punch centred at the patch centre (section "Punch").
   struct PunchParameters
   {
-    PunchShape          shape          = PunchShape::circle;
-    double              radius         = 2.5;
-    double              length         = 45;
-    double              width          = 8;
-    PunchContact        contact        = PunchContact::bonded;
-    PunchControl        control        = PunchControl::displacement;
-    double              depth          = 0.5;
-    unsigned int        load_steps     = 1;
-    std::vector<double> forces         = {0.35, 0.5, 0.75, 1.0, 1.25, 1.5, 1.8};
-    double              profile_length = 30;
-    unsigned int        profile_points = 301;
-    bool                section        = true;
-    bool                edge_contact   = false;
-    double              edge_radius    = 0.5;
+    PunchShape          shape      = PunchShape::circle;
+    double              radius     = 2.5;
+    double              length     = 45;
+    double              width      = 8;
+    PunchContact        contact    = PunchContact::bonded;
+    PunchControl        control    = PunchControl::displacement;
+    double              depth      = 0.5;
+    unsigned int        load_steps = 1;
+    std::vector<double> forces     = {0.35, 0.5, 0.75, 1.0, 1.25, 1.5, 1.8};
+    std::vector<double> depth_uncertainty;
+    double              profile_length  = 30;
+    unsigned int        profile_points  = 301;
+    bool                section         = true;
+    bool                edge_contact    = false;
+    double              edge_radius     = 0.5;
     double              contact_penalty = 100;
 
     /// Whether the point (x, y, .) lies on the punch's face (edges
