@@ -7,7 +7,7 @@ run one after the other in this script on this machine.
 Cases:
 - hard: benchmarks/hard_cases.prm, reference case (8,262 DoFs, Q1 mixed,
   neo-Hookean, microstructure, edge contact, bonded), one rank;
-- forearm: prm/forearm_indentation.prm at finite strain as in
+- forearm: prm/forearm_indentation_linear.prm at finite strain as in
   benchmarks/large_deformation.py (Q1 mixed, 58,983 DoFs, neo-Hookean,
   tension-field septa, tension-only ligaments, edge contact, bonded): AMG on
   2 ranks against Cholesky on one rank (it factorises on one process).
@@ -38,7 +38,7 @@ FOREARM = ["Punch/Section=false", "Punch/Contact=bonded",
            "Punch/Edge contact=true"] + \
     [f"Layer stack/{l}/Material model=neo-Hookean" for l in LAYERS]
 CASES = {"hard": (os.path.join(ROOT, "benchmarks", "hard_cases.prm"), []),
-         "forearm": (os.path.join(ROOT, "prm", "forearm_indentation.prm"),
+         "forearm": (os.path.join(ROOT, "prm", "forearm_indentation_linear.prm"),
                      FOREARM)}
 
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Speed versus error of the forearm indentation (prm/forearm_indentation.prm,
+"""Speed versus error of the forearm indentation (prm/forearm_indentation_linear.prm,
 bonded punch, linear elasticity): stiffness error against a converged value
 versus wall time and DoFs, for Q1 displacement, Q1 mixed (B-bar), Q1
 enhanced (B-bar plus incompatible modes) and Q2 mixed, layers only and with the microstructure (everywhere, or only in a
@@ -24,7 +24,7 @@ import csv, json, math, os, subprocess, sys, tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SSC = os.path.join(ROOT, "build", "bin", "ssc")
-PRM = os.path.join(ROOT, "prm", "forearm_indentation.prm")
+PRM = os.path.join(ROOT, "prm", "forearm_indentation_linear.prm")
 OUT = os.path.join(ROOT, "benchmarks", "results")
 BASE = {"Run/Write fields": "false", "Punch/Control": "displacement",
         "Punch/Section": "false", "Punch/Profile length": "0"}

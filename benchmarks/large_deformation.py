@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Large deformation of the forearm indentation (prm/forearm_indentation.prm
+"""Large deformation of the forearm indentation (prm/forearm_indentation_linear.prm
 with its microstructure) up to 1.8 N: linear versus corotational versus
 neo-Hookean layers, bonded and frictionless punch, force control.
 
@@ -48,7 +48,7 @@ import argparse, csv, os, re, subprocess, time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
                    "bin", "ssc")
-PRM = os.path.join(ROOT, "prm", "forearm_indentation.prm")
+PRM = os.path.join(ROOT, "prm", "forearm_indentation_linear.prm")
 OUT = os.path.join(ROOT, "benchmarks", "results")
 LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
 LAWS = ["linear", "corotational", "neo-Hookean"]
