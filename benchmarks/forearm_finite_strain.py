@@ -117,6 +117,16 @@ def scene_forces():
     raise RuntimeError("no Punch/Forces in " + SCENE)
 
 
+def result_columns(summary, forces):
+    """The columns every table shares: wall time and the depth per force
+    (empty where the run failed or stopped short)."""
+    columns = {"wall_time_s": round(summary["timings"]["total"], 1)
+               if summary else ""}
+    for f, d in zip(forces, depths_at(summary, forces)):
+        columns[f"depth_mm_at_{f}N"] = "" if d is None else d
+    return columns
+
+
 def write_csv(path, fields, rows):
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
@@ -182,13 +192,9 @@ def seeds(n):
     rows = []
     for seed in range(1, n + 1):
         s = run(SCENE, f"seed{seed}", {"Microstructure/Seed": str(seed)})
-        row = {"seed": seed,
-               "stiffness_N_per_mm": s["stiffness_N_per_mm"] if s else "",
-               "wall_time_s": round(s["timings"]["total"], 1)
-               if s else ""}
-        for f, d in zip(forces, depths_at(s, forces)):
-            row[f"depth_mm_at_{f}N"] = "" if d is None else d
-        rows.append(row)
+        rows.append({"seed": seed,
+                     "stiffness_N_per_mm": s["stiffness_N_per_mm"] if s
+                     else "", **result_columns(s, forces)})
     fields = ["seed", "stiffness_N_per_mm", "wall_time_s"] + \
         [f"depth_mm_at_{f}N" for f in forces]
     for stat, fn in [("mean", statistics.mean), ("std", statistics.stdev)]:
@@ -211,12 +217,8 @@ def herlin():
             ("herlin2014_setup", HERLIN, HERLIN_SETUP),
             ("in_vivo_setup", SCENE, HERLIN_SETUP)]:
         s = run(prm, name, overrides)
-        row = {"case": name, "dofs": s["dofs"] if s else "",
-               "wall_time_s": round(s["timings"]["total"], 1)
-               if s else ""}
-        for f, d in zip(forces, depths_at(s, forces)):
-            row[f"depth_mm_at_{f}N"] = "" if d is None else d
-        rows.append(row)
+        rows.append({"case": name, "dofs": s["dofs"] if s else "",
+                     **result_columns(s, forces)})
     fields = ["case", "dofs", "wall_time_s"] + \
         [f"depth_mm_at_{f}N" for f in forces]
     write_csv(os.path.join(OUT, "forearm_herlin.csv"), fields, rows)
