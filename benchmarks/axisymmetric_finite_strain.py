@@ -109,33 +109,10 @@ def ccx_input(r, z, depths, element="CAX8R", bonded=True):
     """The ccx input: the punch pressed to max(depths) in one *STATIC step
     with automatic increments, the total axial reaction on the punch nodes
     printed at each of depths (time = depth / max depth)."""
-    R = np.empty(2 * len(r) - 1)
-    R[0::2], R[1::2] = r, 0.5 * (r[1:] + r[:-1])
-    Z = np.empty(2 * len(z) - 1)
-    Z[0::2], Z[1::2] = z, 0.5 * (z[1:] + z[:-1])
-    NR, NZ = len(R), len(Z)
-    nid = lambda i, j: j * NR + i + 1
-    L = ["*HEADING", f"forearm layers, bonded punch, {element}, NLGEOM",
-         "*NODE"]
-    L += [f"{nid(i, j)}, {cp._fmt(R[i])}, {cp._fmt(Z[j])}"
-          for j in range(NZ) for i in range(NR) if not (i % 2 and j % 2)]
-    L.append(f"*ELEMENT, TYPE={element}, ELSET=EALL")
-    bottoms = -np.cumsum([t for _, t, _ in LAYERS])
-    elsets = {name: [] for name, _, _ in LAYERS}
-    e = 0
-    for jj in range(len(z) - 1):
-        layer = LAYERS[int(np.searchsorted(-bottoms,
-                                           -0.5 * (z[jj] + z[jj + 1])))][0]
-        for ii in range(len(r) - 1):
-            i, j = 2 * ii, 2 * jj
-            e += 1
-            L.append(f"{e}, " + cp._quad8(nid, i, j))
-            elsets[layer].append(e)
-    L += cp._element_sets(elsets)
-    sets = {"BOTTOM": [nid(i, 0) for i in range(NR)],
-            "SIDE": [nid(NR - 1, j) for j in range(NZ)],
-            "AXIS": [nid(0, j) for j in range(NZ)],
-            "PUNCH": [nid(i, NZ - 1) for i in range(NR) if R[i] <= ON_PUNCH]}
+    L, sets, _ = cp.layered_axisymmetric_grid(
+        r, z, LAYERS, element,
+        f"forearm layers, {'bonded' if bonded else 'frictionless'} punch, "
+        f"{element}, NLGEOM", ON_PUNCH)
     for name, nodes in sets.items():
         L.append(f"*NSET, NSET={name}")
         L += cp._lines(nodes)
@@ -152,8 +129,7 @@ def ccx_input(r, z, depths, element="CAX8R", bonded=True):
           "BOTTOM, 1, 2, 0.0", "SIDE, 1, 2, 0.0", "AXIS, 1, 1, 0.0"]
     if bonded:
         L.append("PUNCH, 1, 1, 0.0")
-    L += [
-          f"PUNCH, 2, 2, {-d_max!r}",
+    L += [f"PUNCH, 2, 2, {-d_max!r}",
           "*NODE PRINT, NSET=PUNCH, TOTALS=ONLY, TIME POINTS=DEPTHS", "RF",
           "*END STEP"]
     return "\n".join(L) + "\n", (len(r) - 1) * (len(z) - 1)

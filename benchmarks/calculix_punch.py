@@ -456,24 +456,29 @@ def axisymmetric_mesh(level, edge_size=AXI_EDGE_SIZE, growth=AXI_GROWTH,
     return np.array(r), np.array(sorted(z))
 
 
-def axisymmetric_input(nu, r, z, element="CAX8R"):
-    """The ccx input of the punch on the (r, z) grid (x = r, y = z)."""
+def layered_axisymmetric_grid(r, z, layers, element, heading,
+                              on_punch=ON_PUNCH):
+    """The nodes, elements (8-node quadrilaterals of type element, midside
+    nodes at the midpoints) and per-layer element sets of the (r, z) grid
+    (corner coordinates ascending; x = r, y = z), layers (name, thickness,
+    modulus) from the top z = 0 down, and the node sets BOTTOM, SIDE, AXIS
+    and PUNCH (top nodes with r <= on_punch): (input lines, node sets,
+    number of nodes)."""
     R = np.empty(2 * len(r) - 1)
     R[0::2], R[1::2] = r, 0.5 * (r[1:] + r[:-1])
     Z = np.empty(2 * len(z) - 1)
     Z[0::2], Z[1::2] = z, 0.5 * (z[1:] + z[:-1])
     NR, NZ = len(R), len(Z)
     nid = lambda i, j: j * NR + i + 1
-    L = ["*HEADING", f"bonded punch, axisymmetric {element}, nu = {nu}",
-         "*NODE"]
+    L = ["*HEADING", heading, "*NODE"]
     L += [f"{nid(i, j)}, {_fmt(R[i])}, {_fmt(Z[j])}"
           for j in range(NZ) for i in range(NR) if not (i % 2 and j % 2)]
     L.append(f"*ELEMENT, TYPE={element}, ELSET=EALL")
-    bottoms = -np.cumsum([t for _, t, _ in LAYERS])  # layer bottoms
-    elsets = {name: [] for name, _, _ in LAYERS}
+    bottoms = -np.cumsum([t for _, t, _ in layers])  # layer bottoms
+    elsets = {name: [] for name, _, _ in layers}
     e = 0
     for jj in range(len(z) - 1):
-        layer = LAYERS[int(np.searchsorted(-bottoms,
+        layer = layers[int(np.searchsorted(-bottoms,
                                            -0.5 * (z[jj] + z[jj + 1])))][0]
         for ii in range(len(r) - 1):
             i, j = 2 * ii, 2 * jj
@@ -486,13 +491,20 @@ def axisymmetric_input(nu, r, z, element="CAX8R"):
     sets = {"BOTTOM": [nid(i, 0) for i in range(NR)],
             "SIDE": [nid(NR - 1, j) for j in range(NZ)],
             "AXIS": [nid(0, j) for j in range(NZ)],
-            "PUNCH": [nid(i, NZ - 1) for i in range(NR) if R[i] <= ON_PUNCH]}
+            "PUNCH": [nid(i, NZ - 1) for i in range(NR) if R[i] <= on_punch]}
+    return L, sets, NR * NZ - (NR // 2) * (NZ // 2)
+
+
+def axisymmetric_input(nu, r, z, element="CAX8R"):
+    """The ccx input of the punch on the (r, z) grid (x = r, y = z)."""
+    L, sets, n_nodes = layered_axisymmetric_grid(
+        r, z, LAYERS, element, f"bonded punch, axisymmetric {element}, "
+        f"nu = {nu}")
     L += _node_sets_and_layers(sets, nu)
     L += ["*STEP", "*STATIC", "*BOUNDARY", "BOTTOM, 1, 2, 0.0",
           "SIDE, 1, 2, 0.0", "AXIS, 1, 1, 0.0", "PUNCH, 1, 1, 0.0",
           f"PUNCH, 2, 2, {-INDENT!r}",
           "*NODE PRINT, NSET=PUNCH, TOTALS=ONLY", "RF", "*END STEP"]
-    n_nodes = NR * NZ - (NR // 2) * (NZ // 2)
     return "\n".join(L) + "\n", n_nodes, (len(r) - 1) * (len(z) - 1)
 
 
