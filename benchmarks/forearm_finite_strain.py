@@ -6,6 +6,7 @@ realisation moves them, and the reference model's set-up reproduced.
     /usr/bin/python3 benchmarks/forearm_finite_strain.py convergence
     /usr/bin/python3 benchmarks/forearm_finite_strain.py seeds [N]
     /usr/bin/python3 benchmarks/forearm_finite_strain.py herlin
+    /usr/bin/python3 benchmarks/forearm_finite_strain.py roi
     /usr/bin/python3 benchmarks/forearm_finite_strain.py plot
 
 convergence: the scene at every force with a bonded and a frictionless
@@ -27,10 +28,16 @@ moduli on the scene's discretisation) and the reference model's own
 set-up: a 2 mm grid of Q1 displacement elements (no refinement), every
 layer corotational, nu = 0.49, its moduli.
 
+roi: one lobule and ligament realisation (seed 1, drawn in the 60 x 60 mm
+square about the punch: Realisation half width = 30) cut at region radii
+5-30 mm, and the layers alone, the septa alone and the ligaments alone in
+the 30 mm region: depth and stiffness against the 30 mm region, and the
+wall time.
+
 Each run is kept in benchmarks/results/forearm_runs/<case>/ (summary and
 force-displacement table only) and not repeated; delete a folder to rerun.
 Writes benchmarks/results/forearm_convergence.csv, forearm_seeds.csv,
-forearm_herlin.csv and forearm_convergence.png. 2 MPI ranks.
+forearm_herlin.csv, forearm_roi.csv and forearm_convergence.png. 2 MPI ranks.
 """
 import csv, json, os, shutil, statistics, subprocess, sys, tempfile
 
@@ -224,6 +231,50 @@ def herlin():
     write_csv(os.path.join(OUT, "forearm_herlin.csv"), fields, rows)
 
 
+# region-of-interest study: one realisation (drawn in the 60 x 60 mm
+# square about the punch) cut at growing radii, and each structure alone
+ROI_REALISATION = {"Microstructure/Region of interest/Realisation half "
+                   "width": "30"}
+ROI_RADII = [5, 10, 15, 20, 30]
+ROI_STRUCTURES = [
+    ("layers only", {"Microstructure/Lobules": "false",
+                     "Microstructure/Ligaments/Enabled": "false"}),
+    ("septa only", {"Microstructure/Ligaments/Enabled": "false"}),
+    ("ligaments only", {"Microstructure/Lobules": "false"})]
+
+
+def roi():
+    """The region of interest's radius and structures at the scene's
+    discretisation (seed 1): depth and stiffness against the largest
+    region, and the cost."""
+    forces = scene_forces()
+    rows = []
+    cases = [(f"radius {r}", f"roi_r{r}",
+              {**ROI_REALISATION,
+               "Microstructure/Region of interest/Radius": str(r)})
+             for r in ROI_RADII]
+    cases += [(label, "roi_" + label.replace(" ", "_"),
+               {**ROI_REALISATION, **overrides})
+              for label, overrides in ROI_STRUCTURES]
+    for label, name, overrides in cases:
+        s = run(SCENE, name, overrides)
+        rows.append({"case": label,
+                     "stiffness_N_per_mm": s["stiffness_N_per_mm"] if s
+                     else "", **result_columns(s, forces)})
+    reference = rows[len(ROI_RADII) - 1]  # the largest region
+    for r in rows:
+        r["stiffness_change"] = (
+            r["stiffness_N_per_mm"] / reference["stiffness_N_per_mm"] - 1
+            if r["stiffness_N_per_mm"] != "" else "")
+    fields = ["case", "stiffness_N_per_mm", "stiffness_change",
+              "wall_time_s"] + [f"depth_mm_at_{f}N" for f in forces]
+    write_csv(os.path.join(OUT, "forearm_roi.csv"), fields, rows)
+    for r in rows:
+        print(f"{r['case']:16s} " + ", ".join(
+            f"{k}: {v:.4g}" for k, v in r.items()
+            if k != "case" and v != ""))
+
+
 def plot():
     import matplotlib
     matplotlib.use("Agg")
@@ -263,6 +314,8 @@ if __name__ == "__main__":
         seeds(int(sys.argv[2]) if len(sys.argv) > 2 else 10)
     elif command == "herlin":
         herlin()
+    elif command == "roi":
+        roi()
     elif command == "plot":
         plot()
     else:

@@ -48,6 +48,18 @@ namespace ssc
   } // namespace
 
 
+  namespace
+  {
+    /// Whether the ligaments are drawn in a rectangle beyond the region of
+    /// interest (Realisation half width) and cut to it afterwards.
+    bool
+    drawn_beyond_region(const MicrostructureParameters &parameters)
+    {
+      return parameters.region.realisation_half_width > 0;
+    }
+  } // namespace
+
+
   LigamentDensity::LigamentDensity(const BoundingBox<2>           &rectangle,
                                    const MicrostructureParameters &parameters)
     : density(parse_surface_expression(parameters.ligament_density,
@@ -80,7 +92,8 @@ namespace ssc
                 AssertThrow(false, ExcMessage(message.str()));
               }
             maximum = std::max(maximum, rho);
-            if (q < gauss.size() && parameters.region.contains(p[0], p[1]))
+            if (q < gauss.size() && (drawn_beyond_region(parameters) ||
+                                     parameters.region.contains(p[0], p[1])))
               expected += gauss.weight(q) * hx * hy * rho / 100.;
           }
   }
@@ -116,13 +129,20 @@ namespace ssc
         const double x = lo[0] + uniform(generator) * (hi[0] - lo[0]);
         const double y = lo[1] + uniform(generator) * (hi[1] - lo[1]);
         const double u = uniform(generator);
-        if (!parameters.region.contains(x, y) ||
+        if (!(drawn_beyond_region(parameters) ||
+              parameters.region.contains(x, y)) ||
             u * bound > density.density->value(Point<2>(x, y)))
           continue;
         ligaments.push_back(
           {Point<3>(x, y, -layers.depth_of_interface(top, x, y)),
            Point<3>(x, y, -layers.depth_of_interface(bottom, x, y))});
       }
+    // drawn in the whole rectangle: the region cuts the realisation
+    const auto outside = [&](const Ligament &ligament) {
+      return !parameters.region.contains(ligament.top[0], ligament.top[1]);
+    };
+    ligaments.erase(std::remove_if(ligaments.begin(), ligaments.end(), outside),
+                    ligaments.end());
     return ligaments;
   }
 } // namespace ssc

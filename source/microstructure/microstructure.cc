@@ -23,7 +23,7 @@ namespace ssc
     : layers(layers)
     , parameters(parameters)
     , rectangle(
-        parameters.region.bounding_rectangle(patch_length_x, patch_length_y))
+        parameters.region.realisation_rectangle(patch_length_x, patch_length_y))
   {}
 
 

@@ -47,6 +47,33 @@ namespace ssc
   }
 
 
+  BoundingBox<2>
+  MicrostructureRegion::realisation_rectangle(const double patch_length_x,
+                                              const double patch_length_y) const
+  {
+    const BoundingBox<2> region =
+      bounding_rectangle(patch_length_x, patch_length_y);
+    if (realisation_half_width == 0)
+      return region;
+    const double         w = realisation_half_width;
+    const Point<2>       lo(std::max(-patch_length_x / 2, centre[0] - w),
+                      std::max(-patch_length_y / 2, centre[1] - w));
+    const Point<2>       hi(std::min(patch_length_x / 2, centre[0] + w),
+                      std::min(patch_length_y / 2, centre[1] + w));
+    const BoundingBox<2> square(std::make_pair(lo, hi));
+    for (const Point<2> &corner : {region.get_boundary_points().first,
+                                   region.get_boundary_points().second})
+      AssertThrow(square.point_inside(corner, 1e-9),
+                  ExcMessage("Microstructure/Region of interest/Realisation "
+                             "half width = " +
+                             std::to_string(w) +
+                             " mm does not hold the region of interest: it "
+                             "must reach at least as far from the centre as "
+                             "the region (or the patch)."));
+    return square;
+  }
+
+
   void
   MicrostructureParameters::add_parameters(ParameterHandler &prm)
   {
@@ -140,6 +167,16 @@ namespace ssc
                       region.radius,
                       "Radius of the cylinder, mm.",
                       Patterns::Double(0));
+    prm.add_parameter(
+      "Realisation half width",
+      region.realisation_half_width,
+      "0: the lobules and ligaments are drawn at random in the region's "
+      "bounding rectangle, so regions of different sizes are different "
+      "realisations. > 0: they are drawn in the square of this half width "
+      "(mm) about the centre (clipped to the patch) and then cut to the "
+      "region, so that growing regions cut one realisation (a "
+      "region-of-interest study); it must hold the region.",
+      Patterns::Double(0));
     prm.leave_subsection();
     prm.enter_subsection("Fasciotomy");
     prm.add_parameter("Enabled",

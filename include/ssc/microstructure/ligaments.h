@@ -22,8 +22,9 @@ namespace ssc
 
   /**
    * The ligament density of @p parameters (per cm^2, a function of x and
-   * y) over the region's bounding rectangle: the expected number of
-   * ligaments in the region and the density's largest sampled value.
+   * y) over the rectangle where they are drawn: the expected number of
+   * ligaments drawn (in the region, or in the whole rectangle with a
+   * Realisation half width) and the density's largest sampled value.
    * Throws, naming the parameter, where the density is negative or not
    * finite.
    */
@@ -38,9 +39,11 @@ namespace ssc
   };
 
   /**
-   * Places the skin ligaments of the region @p parameters.region (bounding
-   * rectangle @p rectangle): their number is the integral of the density
-   * (per cm^2) over the region, rounded; their positions are drawn from the
+   * Places the skin ligaments of the region @p parameters.region, drawn in
+   * @p rectangle (its bounding rectangle, or the larger square of the
+   * Realisation half width, then cut to the region): their number is the
+   * integral of the density (per cm^2) over where they are drawn, rounded;
+   * their positions are drawn from the
    * density by rejection sampling (std::mt19937 seeded with the seed), so a
    * density that varies over the patch (buttock, knee) puts more ligaments
    * where it is higher. Each runs vertically from the bottom of the skin

@@ -43,6 +43,11 @@ namespace ssc
     double      half_length_x = 10;
     double      half_length_y = 10;
     double      radius        = 10;
+    /// > 0: the random microstructure is drawn in the square of this half
+    /// width about the centre and then cut to the region, so that regions
+    /// of different sizes cut one realisation; 0: drawn in the region's
+    /// bounding rectangle
+    double realisation_half_width = 0;
 
     /// Whether the lateral position (x, y) lies in the region.
     bool
@@ -53,6 +58,13 @@ namespace ssc
     BoundingBox<2>
     bounding_rectangle(const double patch_length_x,
                        const double patch_length_y) const;
+
+    /// Where the random microstructure is drawn: the square of
+    /// realisation_half_width clipped to the patch (throws unless it holds
+    /// the region's bounding rectangle), or that rectangle.
+    BoundingBox<2>
+    realisation_rectangle(const double patch_length_x,
+                          const double patch_length_y) const;
   };
 
   /// Skin ligaments (retinacula cutis running perpendicular to the skin).
