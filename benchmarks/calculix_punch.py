@@ -437,22 +437,23 @@ def graded_segment(s0, s1, edge_size, growth, max_size):
 
 
 def axisymmetric_mesh(level, edge_size=AXI_EDGE_SIZE, growth=AXI_GROWTH,
-                      max_size=AXI_MAX_SIZE):
+                      max_size=AXI_MAX_SIZE, layers=LAYERS, radius=RADIUS):
     """Corner coordinates (r ascending, z ascending) of the reference grid
     at a level: sizes min(max_size, edge_size + growth s) / 2^level in
     growth and max_size, s the distance from r = a radially and from z = 0
-    in depth; nodes at r = a and on every layer interface."""
+    in depth; nodes at r = a and on every interface of layers (name,
+    thickness, modulus), out to radius."""
     g, h = growth / 2 ** level, max_size / 2 ** level
     left = graded_segment(0.0, PUNCH, edge_size, g, h)
-    right = graded_segment(0.0, RADIUS - PUNCH, edge_size, g, h)
+    right = graded_segment(0.0, radius - PUNCH, edge_size, g, h)
     r = sorted([PUNCH - s for s in left] + [PUNCH + s for s in right[1:]])
     r[0] = 0.0
     z, top = [0.0], 0.0
-    for _, thickness, _ in LAYERS:
+    for _, thickness, _ in layers:
         z += [-s for s in
               graded_segment(top, top + thickness, edge_size, g, h)[1:]]
         top += thickness
-    z[-1] = -DEPTH
+    z[-1] = -top
     return np.array(r), np.array(sorted(z))
 
 
