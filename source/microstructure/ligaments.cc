@@ -45,11 +45,8 @@ namespace ssc
                              "skin."));
       return {0, 0};
     }
-  } // namespace
 
 
-  namespace
-  {
     /// Whether the ligaments are drawn in a rectangle beyond the region of
     /// interest (Realisation half width) and cut to it afterwards.
     bool
