@@ -19,8 +19,8 @@ RANKS="${SSC_RANKS:-$(nproc)}"
 MAIN_SCENE="$ROOT/prm/forearm_indentation.prm"
 
 PACKAGES="libdeal.ii-dev libcgal-dev libeigen3-dev libboost-dev
-  nlohmann-json3-dev libsuitesparse-dev libopenblas0-serial numdiff cmake
-  ninja-build ccache openmpi-bin calculix-ccx
+  nlohmann-json3-dev libsuitesparse-dev libmumps-dev libopenblas0-serial
+  numdiff cmake ninja-build ccache openmpi-bin calculix-ccx
   python3-matplotlib python3-numpy"
 
 install_packages() {

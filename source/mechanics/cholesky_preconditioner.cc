@@ -27,6 +27,9 @@ namespace ssc
     {
       cholmod_start(&common);
       common.print = 0; // failures are reported through the return values
+      // L L^T also where CHOLMOD chooses a simplicial factor (little fill):
+      // its default there, L D L^T, would accept an indefinite matrix
+      common.final_ll = 1;
     }
 
     ~Factorization()

@@ -201,14 +201,27 @@ namespace ssc
 
   void
   LinearSolver::setup_preconditioner(
-    const TrilinosWrappers::SparseMatrix &matrix)
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const bool                            allow_indefinite)
   {
+    // a failed factorisation keeps no factor, a successful one drops the
+    // other kind: the factor that is left, or else AMG, is the active one
+    ldlt.clear();
     if (parameters.preconditioner == DisplacementPreconditioner::cholesky)
       {
-        // a failed factorisation keeps no factor: AMG is then the active one
         if (cholesky.initialize(matrix))
           {
             ++n_factorizations;
+            return;
+          }
+        if (allow_indefinite && ldlt.initialize(matrix))
+          {
+            ++n_indefinite_factorizations;
+            if (progress != nullptr)
+              *progress << "  The tangent is not positive definite ("
+                        << ldlt.negative_pivots()
+                        << " negative eigenvalues): its L D L^T factor"
+                        << std::endl;
             return;
           }
         if (progress != nullptr)
@@ -225,6 +238,8 @@ namespace ssc
   {
     if (cholesky.factorized())
       return cholesky;
+    if (ldlt.factorized())
+      return ldlt;
     return amg;
   }
 
@@ -312,9 +327,10 @@ namespace ssc
     // A factor of an earlier matrix is used for a limited number of
     // iterations; then the current matrix is factorised and the solve
     // continues from where it stopped.
-    const bool reuse = cholesky.factorized() &&
-                       cholesky.trilinos_operator().OperatorDomainMap().SameAs(
-                         matrix.trilinos_matrix().DomainMap());
+    const bool reuse =
+      (cholesky.factorized() || ldlt.factorized()) &&
+      active_preconditioner().trilinos_operator().OperatorDomainMap().SameAs(
+        matrix.trilinos_matrix().DomainMap());
     if (!reuse)
       setup_preconditioner(matrix);
     solution_constraints.set_zero(x);
@@ -540,8 +556,9 @@ namespace ssc
                              const SolveTarget               &target,
                              const bool new_preconditioner)
   {
-    if (new_preconditioner)
-      setup_preconditioner(matrix);
+    // truncated CG needs a positive definite preconditioner
+    if (new_preconditioner || ldlt.factorized())
+      setup_preconditioner(matrix, false);
     const double tolerance =
       std::max(std::max(parameters.tolerance, target.relative_tolerance) *
                  rhs.l2_norm(),

@@ -34,8 +34,11 @@ namespace ssc
       "solver needs at most Refactorization iterations with it, "
       "refactorised otherwise: robust in nu, contrast and degree, its "
       "memory and factorisation time grow faster than linearly with the "
-      "DoFs; one MPI rank only. A tangent that is not positive definite is "
-      "solved with amg.");
+      "DoFs; one MPI rank only. A tangent that is not positive definite "
+      "(a Newton iterate past equilibrium or a stability limit) is "
+      "factorised as L D L^T instead (MUMPS, symmetric indefinite with "
+      "pivoting) and solved by GMRES; trust-region steps, which need a "
+      "positive definite preconditioner, use amg for it.");
     prm.add_parameter(
       "Refactorization iterations",
       refactorization_iterations,

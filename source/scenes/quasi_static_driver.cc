@@ -108,6 +108,8 @@ namespace ssc
                                      {"wall_time_per_step", times}};
     if (system.factorizations() > 0)
       solver["cholesky_factorizations"] = system.factorizations();
+    if (system.indefinite_factorizations() > 0)
+      solver["indefinite_factorizations"] = system.indefinite_factorizations();
     if (!linear())
       solver["final_residuals_per_step"] = residuals;
     else

@@ -147,6 +147,14 @@ namespace ssc
       return linear_solver.factorizations();
     }
 
+    /// L D L^T factorisations of tangents that were not positive definite
+    /// (Linear solver/Preconditioner = cholesky; 0 otherwise).
+    unsigned int
+    indefinite_factorizations() const
+    {
+      return linear_solver.indefinite_factorizations();
+    }
+
     /**
      * Reaction force (N) on the dofs held by condition @p condition (see
      * BoundaryConstraints::setup()): the residual of the cells and dof

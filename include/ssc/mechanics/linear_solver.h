@@ -15,6 +15,7 @@
 #include <ssc/mechanics/boundary_constraints.h>
 #include <ssc/mechanics/cholesky_preconditioner.h>
 #include <ssc/mechanics/displacement_field.h>
+#include <ssc/mechanics/ldlt_preconditioner.h>
 #include <ssc/mechanics/linear_solver_parameters.h>
 #include <ssc/mechanics/pressure_system.h>
 #include <ssc/mechanics/truncated_cg.h>
@@ -63,17 +64,27 @@ namespace ssc
                  ConditionalOStream           *progress = nullptr);
     ~LinearSolver();
 
-    /// Builds the preconditioner for @p matrix: its Cholesky factor with
-    /// Preconditioner = cholesky (AMG if it is not positive definite), the
-    /// AMG hierarchy otherwise.
+    /// Builds the preconditioner for @p matrix: with Preconditioner =
+    /// cholesky its Cholesky factor, or, if it is not positive definite,
+    /// its L D L^T factor where @p allow_indefinite (GMRES then solves) and
+    /// AMG otherwise; the AMG hierarchy with Preconditioner = amg.
     void
-    setup_preconditioner(const TrilinosWrappers::SparseMatrix &matrix);
+    setup_preconditioner(const TrilinosWrappers::SparseMatrix &matrix,
+                         const bool allow_indefinite = true);
 
     /// How many Cholesky factorisations were computed so far.
     unsigned int
     factorizations() const
     {
       return n_factorizations;
+    }
+
+    /// How many L D L^T factorisations of tangents that were not positive
+    /// definite were computed so far.
+    unsigned int
+    indefinite_factorizations() const
+    {
+      return n_indefinite_factorizations;
     }
 
     /**
@@ -155,8 +166,12 @@ namespace ssc
     TrilinosWrappers::PreconditionAMG amg;
     /// factorised only with Preconditioner = cholesky; while it holds a
     /// factor, that factor is the active preconditioner
-    CholeskyPreconditioner              cholesky;
-    unsigned int                        n_factorizations = 0;
+    CholeskyPreconditioner cholesky;
+    /// the factor of a tangent that is not positive definite, with
+    /// Preconditioner = cholesky; active while it holds a factor
+    LdltPreconditioner                  ldlt;
+    unsigned int                        n_factorizations            = 0;
+    unsigned int                        n_indefinite_factorizations = 0;
     std::unique_ptr<Epetra_MultiVector> near_null_space;
   };
 } // namespace ssc
