@@ -149,6 +149,9 @@ main(int argc, char **argv)
           "    set Material model = neo-Hookean\n  end\nend\n"
           "subsection Punch\n  set Edge contact = true\n"
           "  set Radius = 2\n  set Edge radius = 3\nend\n");
+  check("punch tied on its flat face without the edge contact",
+        std::string(valid_stack) +
+          "subsection Punch\n  set Tied region = flat face\nend\n");
   check("volumetric stabilisation without the mean dilatation",
         std::string(valid_stack) +
           "subsection Layer stack\n  subsection fat\n"

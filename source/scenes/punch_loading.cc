@@ -18,11 +18,9 @@ namespace ssc
     , symmetry_factor(parameters.mesh.symmetry_factor())
   {
     TimerOutput::Scope     t(timer, "setup");
-    const PunchParameters &punch    = parameters.punch;
-    const double           a        = punch.radius;
-    const auto             on_punch = [punch](const Point<3> &p) {
-      return punch.covers(p);
-    };
+    const PunchParameters &punch = parameters.punch;
+    const double           a     = punch.radius;
+    const auto on_punch = [punch](const Point<3> &p) { return punch.ties(p); };
     // a punch between the surface nodes would hold nothing and report a
     // zero force; a rectangle whose edges cut through cells would press
     // on a smaller, jagged face
@@ -48,8 +46,12 @@ namespace ssc
     if (Utilities::MPI::sum(n_under, communicator) == 0)
       {
         std::ostringstream message;
-        message << "Punch/Radius = " << a
-                << " mm: no mesh node of the skin surface lies under the "
+        message << "Punch/Radius = " << a << " mm"
+                << (punch.tied_region == PunchTiedRegion::flat_face ?
+                      " (its flat face: Radius - Edge radius = " +
+                        std::to_string(a - punch.edge_radius) + " mm)" :
+                      std::string())
+                << ": no mesh node of the skin surface lies under the "
                    "punch, so it would press on nothing. Refine the mesh "
                    "there (Mesh/Cell size, Mesh/Region of interest) or "
                    "enlarge the punch.";

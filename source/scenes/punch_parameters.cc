@@ -18,6 +18,15 @@ namespace ssc
   }
 
 
+  bool
+  PunchParameters::ties(const Point<3> &p) const
+  {
+    if (tied_region == PunchTiedRegion::whole_face)
+      return covers(p);
+    return std::hypot(p[0], p[1]) <= (radius - edge_radius) * (1. + 1e-10);
+  }
+
+
   double
   PunchParameters::area() const
   {
@@ -130,6 +139,17 @@ namespace ssc
                       "Radius (mm) of the rounding of the punch's bottom "
                       "edge (Edge contact); at most the punch radius.",
                       Patterns::Double(0));
+    prm.add_parameter(
+      "Tied region",
+      tied_region,
+      "The skin nodes the punch holds (Contact: all components bonded, or "
+      "the vertical one frictionless). whole face: every node under the "
+      "punch's Radius, so its rim is a sharp edge (singular at finite "
+      "strain) whatever the Edge radius. flat face: only the nodes under the "
+      "flat part of the face, r <= Radius - Edge radius; the skin under the "
+      "rounding is carried by the Edge contact alone and wraps the edge as on "
+      "a real indenter. Needs Edge contact; put a mesh circle there "
+      "(Mesh/Fitted circle radius = Radius - Edge radius).");
     prm.add_parameter("Contact penalty",
                       contact_penalty,
                       "Penalty factor of the edge contact: the contact "
@@ -151,6 +171,12 @@ namespace ssc
     AssertThrow(!edge_contact || contact_penalty > 0,
                 ExcMessage("Punch/Contact penalty must be positive."));
     AssertThrow(radius > 0, ExcMessage("Punch/Radius must be positive (mm)."));
+    AssertThrow(tied_region == PunchTiedRegion::whole_face ||
+                  (edge_contact && edge_radius < radius),
+                ExcMessage("Punch/Tied region = flat face leaves the skin "
+                           "under the rounded edge to the edge contact: it "
+                           "needs Punch/Edge contact = true and an Edge "
+                           "radius smaller than the Radius."));
     AssertThrow(shape == PunchShape::circle || (length > 0 && width > 0),
                 ExcMessage("Punch/Length and Width must be positive (mm)."));
     AssertThrow(shape == PunchShape::circle || !edge_contact,

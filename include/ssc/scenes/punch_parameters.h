@@ -28,6 +28,21 @@ namespace ssc
              {PunchContact::frictionless, "frictionless"}}};
   }
 
+  /// Which skin nodes the punch holds (the tie): all under its radius, or
+  /// only those under the flat part of its face inside the edge rounding.
+  enum class PunchTiedRegion
+  {
+    whole_face,
+    flat_face
+  };
+
+  constexpr std::array<std::pair<PunchTiedRegion, const char *>, 2>
+  enum_table(PunchTiedRegion)
+  {
+    return {{{PunchTiedRegion::whole_face, "whole face"},
+             {PunchTiedRegion::flat_face, "flat face"}}};
+  }
+
   /// Whether the punch's depth or its force is prescribed.
   enum class PunchControl
   {
@@ -76,11 +91,17 @@ namespace ssc
     bool                edge_contact    = false;
     double              edge_radius     = 0.5;
     double              contact_penalty = 100;
+    PunchTiedRegion     tied_region     = PunchTiedRegion::whole_face;
 
     /// Whether the point (x, y, .) lies on the punch's face (edges
     /// included, to round-off).
     bool
     covers(const Point<3> &p) const;
+
+    /// Whether the skin node at @p p is held by the punch (Tied region):
+    /// under the face, or only under its flat part.
+    bool
+    ties(const Point<3> &p) const;
 
     /// The face's area, mm^2.
     double
