@@ -12,7 +12,13 @@ Cases:
   tension-field septa, tension-only ligaments, edge contact, bonded): AMG on
   2 ranks against Cholesky on one rank (it factorises on one process).
 
-Records depth at 1.8 N, Newton and Krylov iterations, factorisations, the
+- ogrid: the main scene's layers (prm/forearm_indentation.prm without the
+  microstructure) on the o-grid, Q2-P1 (33,075 DoFs), to 0.35 N only, one
+  rank, Cholesky: the tangents that are not positive definite factorised as
+  L D L^T (MUMPS) against preconditioned by AMG (Elasticity/Linear
+  solver/Factor indefinite tangents), each twice, alternating.
+
+Records depth at the last force, Newton and Krylov iterations, factorisations, the
 assembly and solve times and the wall time. Writes
 benchmarks/results/finite_strain_solvers.csv (the rows of cases not run
 stay).
@@ -26,9 +32,9 @@ SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
                    "bin", "ssc")
 OUT = os.path.join(ROOT, "benchmarks", "results")
 LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
-FIELDS = ["case", "preconditioner", "predictor", "ranks", "dofs",
-          "depth_mm", "newton_iterations", "linear_iterations",
-          "factorizations", "t_assembly", "t_solve", "t_total", "wall_s",
+FIELDS = ["case", "preconditioner", "indefinite", "predictor", "ranks",
+          "dofs", "depth_mm", "newton_iterations", "linear_iterations",
+          "factorizations", "indefinite_factorizations", "t_assembly", "t_solve", "t_total", "wall_s",
           "memory_MB"]
 FOREARM = ["Punch/Section=false", "Punch/Contact=bonded",
            "Elasticity/Formulation=mixed", "Elasticity/Degree=1",
@@ -37,17 +43,28 @@ FOREARM = ["Punch/Section=false", "Punch/Contact=bonded",
            "Embedded/Ligaments/Tension only=true",
            "Punch/Edge contact=true"] + \
     [f"Layer stack/{l}/Material model=neo-Hookean" for l in LAYERS]
+OGRID = ["Mesh/Layout=o-grid", "Mesh/O-grid/Cells around=8",
+         "Mesh/O-grid/Edge cell size=0.3", "Mesh/O-grid/Radial grading=1.6",
+         "Mesh/O-grid/Grade in depth=true", "Elasticity/Degree=2",
+         "Elasticity/Formulation=mixed", "Microstructure/Lobules=false",
+         "Microstructure/Ligaments/Enabled=false", "Punch/Forces=0.35",
+         "Punch/Depth uncertainty=0"]
 CASES = {"hard": (os.path.join(ROOT, "benchmarks", "hard_cases.prm"), []),
          "forearm": (os.path.join(ROOT, "prm", "forearm_indentation_linear.prm"),
-                     FOREARM)}
+                     FOREARM),
+         "ogrid": (os.path.join(ROOT, "prm", "forearm_indentation.prm"),
+                   OGRID)}
 
 
-def run(case, preconditioner, predictor, ranks, folder):
+def run(case, preconditioner, predictor, ranks, folder, indefinite="ldlt",
+        repeat=0):
     prm, settings = CASES[case]
-    name = f"{case}_{preconditioner}_{predictor}_{ranks}"
+    name = f"{case}_{preconditioner}_{indefinite}_{predictor}_{ranks}_{repeat}"
     args = [SSC, prm, "-s", f"Run/Output directory={folder}",
             "-s", f"Run/Name={name}", "-s", "Run/Write fields=false",
             "-s", f"Elasticity/Linear solver/Preconditioner={preconditioner}",
+            "-s", "Elasticity/Linear solver/Factor indefinite tangents="
+            f"{'true' if indefinite == 'ldlt' else 'false'}",
             "-s", f"Nonlinear solver/Predictor={predictor}"]
     for s in settings:
         args += ["-s", s]
@@ -65,11 +82,14 @@ def run(case, preconditioner, predictor, ranks, folder):
     with open(os.path.join(folder, name, "summary.json")) as f:
         s = json.load(f)
     t, solver = s["timings"], s["solver"]
-    row = dict(case=case, preconditioner=preconditioner, predictor=predictor,
-               ranks=ranks, dofs=s["dofs"], depth_mm=s["depth_mm"][-1],
+    row = dict(case=case, preconditioner=preconditioner,
+               indefinite=indefinite if preconditioner == "cholesky" else "-",
+               predictor=predictor, ranks=ranks, dofs=s["dofs"], depth_mm=s["depth_mm"][-1],
                newton_iterations=solver["newton_iterations"],
                linear_iterations=solver["linear_iterations"],
                factorizations=solver.get("cholesky_factorizations", 0),
+               indefinite_factorizations=solver.get(
+                   "indefinite_factorizations", 0),
                t_assembly=round(t["assembly"], 2),
                t_solve=round(t["solve"], 2), t_total=round(t["total"], 2),
                wall_s=round(wall, 1), memory_MB=round(s["memory_MB"]))
@@ -86,7 +106,11 @@ def main():
                      ("cholesky", "none", 1),
                      ("cholesky", "extrapolation", 1)],
             "forearm": [("amg", "extrapolation", 2),
-                        ("cholesky", "extrapolation", 1)]}
+                        ("cholesky", "extrapolation", 1)],
+            "ogrid": [("cholesky", "extrapolation", 1, "ldlt", 0),
+                      ("cholesky", "extrapolation", 1, "amg", 0),
+                      ("cholesky", "extrapolation", 1, "ldlt", 1),
+                      ("cholesky", "extrapolation", 1, "amg", 1)]}
     path = os.path.join(OUT, "finite_strain_solvers.csv")
     rows = []
     if os.path.exists(path):
@@ -96,12 +120,13 @@ def main():
                     if r["case"] not in args.cases]
     with tempfile.TemporaryDirectory() as folder:
         for case in args.cases:
-            for preconditioner, predictor, ranks in plan[case]:
-                row = run(case, preconditioner, predictor, ranks, folder)
+            for entry in plan[case]:
+                row = run(case, *entry[:3], folder, *entry[3:])
                 if row:
                     rows.append(row)
     with open(path, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=FIELDS)
+        # rows from before a column existed leave it empty
+        writer = csv.DictWriter(f, fieldnames=FIELDS, restval="")
         writer.writeheader()
         writer.writerows(rows)
 

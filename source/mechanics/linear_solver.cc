@@ -214,7 +214,8 @@ namespace ssc
             ++n_factorizations;
             return;
           }
-        if (allow_indefinite && ldlt.initialize(matrix))
+        if (allow_indefinite && parameters.factor_indefinite &&
+            ldlt.initialize(matrix))
           {
             ++n_indefinite_factorizations;
             if (progress != nullptr)

@@ -37,8 +37,15 @@ namespace ssc
       "DoFs; one MPI rank only. A tangent that is not positive definite "
       "(a Newton iterate past equilibrium or a stability limit) is "
       "factorised as L D L^T instead (MUMPS, symmetric indefinite with "
-      "pivoting) and solved by GMRES; trust-region steps, which need a "
-      "positive definite preconditioner, use amg for it.");
+      "pivoting) and solved by GMRES (Factor indefinite tangents); "
+      "trust-region steps, which need a positive definite preconditioner, "
+      "use amg for it.");
+    prm.add_parameter(
+      "Factor indefinite tangents",
+      factor_indefinite,
+      "With Preconditioner = cholesky: factorise a tangent that is not "
+      "positive definite as L D L^T (true), or precondition it with amg "
+      "(false: for comparison, GMRES then needs thousands of iterations).");
     prm.add_parameter(
       "Refactorization iterations",
       refactorization_iterations,

@@ -50,6 +50,7 @@ namespace ssc
     LinearSolverMethod         method         = LinearSolverMethod::cg;
     DisplacementPreconditioner preconditioner = DisplacementPreconditioner::amg;
     unsigned int               refactorization_iterations = 20;
+    bool                       factor_indefinite          = true;
     double                     tolerance                  = 1e-8;
     unsigned int               max_iterations             = 1000;
     bool                       rigid_body_modes           = true;
