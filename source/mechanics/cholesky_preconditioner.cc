@@ -1,15 +1,14 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
-#include <Epetra_Operator.h>
 #include <cholmod.h>
 
 #include <algorithm>
 #include <vector>
 
 #include <ssc/mechanics/cholesky_preconditioner.h>
+#include <ssc/mechanics/factor_operator.h>
 
 namespace ssc
 {
@@ -19,11 +18,11 @@ namespace ssc
    * column form (its lower triangle); the pattern of the last copy decides
    * whether the symbolic analysis can be reused.
    */
-  class CholeskyPreconditioner::Factorization : public Epetra_Operator
+  class CholeskyPreconditioner::Factorization : public FactorOperator
   {
   public:
     explicit Factorization(const Epetra_CrsMatrix &matrix)
-      : map(matrix.RowMap())
+      : FactorOperator(matrix.RowMap())
     {
       cholmod_start(&common);
       common.print = 0; // failures are reported through the return values
@@ -43,28 +42,12 @@ namespace ssc
     factorize(const Epetra_CrsMatrix &matrix)
     {
       positive_definite = false; // until this factorisation succeeds
-      const int n       = matrix.NumMyRows();
       // lower triangle by columns = upper triangle by rows (symmetric)
-      std::vector<int>    column_start(n + 1, 0), row;
-      std::vector<double> value;
-      row.reserve(matrix.NumMyNonzeros() / 2 + n);
-      value.reserve(matrix.NumMyNonzeros() / 2 + n);
-      for (int i = 0; i < n; ++i)
-        {
-          int     length;
-          double *values;
-          int    *indices;
-          matrix.ExtractMyRowView(i, length, values, indices);
-          const int global_row = matrix.GRID(i);
-          for (int k = 0; k < length; ++k)
-            if (matrix.GCID(indices[k]) >= global_row)
-              {
-                row.push_back(matrix.GCID(indices[k]));
-                value.push_back(values[k]);
-              }
-          column_start[i + 1] = row.size();
-        }
-      const bool same_pattern = factor != nullptr &&
+      UpperTriangle        upper        = upper_triangle(matrix);
+      const int            n            = matrix.NumMyRows();
+      std::vector<int>    &column_start = upper.row_start, &row = upper.column;
+      std::vector<double> &value        = upper.value;
+      const bool           same_pattern = factor != nullptr &&
                                 column_start == pattern_start &&
                                 row == pattern_row;
       if (!same_pattern && factor != nullptr)
@@ -136,62 +119,13 @@ namespace ssc
       return 0;
     }
 
-    int
-    Apply(const Epetra_MultiVector &, Epetra_MultiVector &) const override
-    {
-      return -1; // only the inverse is available
-    }
-
-    int
-    SetUseTranspose(bool use) override
-    {
-      return use ? -1 : 0; // symmetric: the transpose is itself
-    }
-
-    double
-    NormInf() const override
-    {
-      return 0;
-    }
-
     const char *
     Label() const override
     {
       return "ssc CHOLMOD Cholesky factor";
     }
 
-    bool
-    UseTranspose() const override
-    {
-      return false;
-    }
-
-    bool
-    HasNormInf() const override
-    {
-      return false;
-    }
-
-    const Epetra_Comm &
-    Comm() const override
-    {
-      return map.Comm();
-    }
-
-    const Epetra_Map &
-    OperatorDomainMap() const override
-    {
-      return map;
-    }
-
-    const Epetra_Map &
-    OperatorRangeMap() const override
-    {
-      return map;
-    }
-
   private:
-    const Epetra_Map       map;
     mutable cholmod_common common;
     cholmod_factor        *factor            = nullptr;
     bool                   positive_definite = false;
@@ -213,16 +147,7 @@ namespace ssc
   CholeskyPreconditioner::initialize(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
-    require_one_process(matrix.get_mpi_communicator());
-    const Epetra_CrsMatrix &crs = matrix.trilinos_matrix();
-    if (factorization == nullptr ||
-        !factorization->OperatorDomainMap().SameAs(crs.RowMap()))
-      factorization = std::make_shared<Factorization>(crs);
-    preconditioner.reset();
-    if (!factorization->factorize(crs))
-      return false;
-    preconditioner = Teuchos::rcp(factorization.get(), false);
-    return true;
+    return refactorize(matrix, factorization, preconditioner);
   }
 
 

@@ -1,16 +1,14 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
-#include <Epetra_Operator.h>
 #include <dmumps_c.h>
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
-#include <ssc/mechanics/cholesky_preconditioner.h>
+#include <ssc/mechanics/factor_operator.h>
 #include <ssc/mechanics/ldlt_preconditioner.h>
 
 namespace ssc
@@ -38,11 +36,11 @@ namespace ssc
    * matrix is passed as the coordinates of its upper triangle (1-based),
    * which MUMPS reads for as long as the instance lives.
    */
-  class LdltPreconditioner::Factorization : public Epetra_Operator
+  class LdltPreconditioner::Factorization : public FactorOperator
   {
   public:
     explicit Factorization(const Epetra_CrsMatrix &matrix)
-      : map(matrix.RowMap())
+      : FactorOperator(matrix.RowMap())
     {
       id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
       id.par          = 1; // the host works too
@@ -71,32 +69,21 @@ namespace ssc
     bool
     factorize(const Epetra_CrsMatrix &matrix)
     {
-      usable                   = false; // until this factorisation succeeds
-      const int              n = matrix.NumMyRows();
+      usable                       = false; // until this factorisation succeeds
+      UpperTriangle          upper = upper_triangle(matrix);
+      const int              n     = matrix.NumMyRows();
       std::vector<MUMPS_INT> row, column;
-      row.reserve(matrix.NumMyNonzeros() / 2 + n);
-      column.reserve(matrix.NumMyNonzeros() / 2 + n);
-      value.clear();
-      value.reserve(matrix.NumMyNonzeros() / 2 + n);
+      row.reserve(upper.column.size());
+      column.reserve(upper.column.size());
       for (int i = 0; i < n; ++i)
-        {
-          int     length;
-          double *values;
-          int    *indices;
-          matrix.ExtractMyRowView(i, length, values, indices);
-          const int global_row = matrix.GRID(i);
-          for (int k = 0; k < length; ++k)
-            if (matrix.GCID(indices[k]) >= global_row)
-              {
-                row.push_back(global_row + 1);
-                column.push_back(matrix.GCID(indices[k]) + 1);
-                value.push_back(values[k]);
-              }
-        }
-      const bool same_pattern =
-        analysed && row == pattern_row && column == pattern_column;
-      id.a = value.data();
-      if (!same_pattern)
+        for (int k = upper.row_start[i]; k < upper.row_start[i + 1]; ++k)
+          {
+            row.push_back(i + 1);
+            column.push_back(upper.column[k] + 1);
+          }
+      value = std::move(upper.value);
+      id.a  = value.data();
+      if (!analysed || row != pattern_row || column != pattern_column)
         {
           pattern_row    = std::move(row);
           pattern_column = std::move(column);
@@ -170,62 +157,13 @@ namespace ssc
       return 0;
     }
 
-    int
-    Apply(const Epetra_MultiVector &, Epetra_MultiVector &) const override
-    {
-      return -1; // only the inverse is available
-    }
-
-    int
-    SetUseTranspose(bool use) override
-    {
-      return use ? -1 : 0; // symmetric: the transpose is itself
-    }
-
-    double
-    NormInf() const override
-    {
-      return 0;
-    }
-
     const char *
     Label() const override
     {
       return "ssc MUMPS L D L^T factor";
     }
 
-    bool
-    UseTranspose() const override
-    {
-      return false;
-    }
-
-    bool
-    HasNormInf() const override
-    {
-      return false;
-    }
-
-    const Epetra_Comm &
-    Comm() const override
-    {
-      return map.Comm();
-    }
-
-    const Epetra_Map &
-    OperatorDomainMap() const override
-    {
-      return map;
-    }
-
-    const Epetra_Map &
-    OperatorRangeMap() const override
-    {
-      return map;
-    }
-
   private:
-    const Epetra_Map       map;
     mutable DMUMPS_STRUC_C id       = {};
     bool                   analysed = false;
     bool                   usable   = false;
@@ -237,16 +175,7 @@ namespace ssc
   bool
   LdltPreconditioner::initialize(const TrilinosWrappers::SparseMatrix &matrix)
   {
-    CholeskyPreconditioner::require_one_process(matrix.get_mpi_communicator());
-    const Epetra_CrsMatrix &crs = matrix.trilinos_matrix();
-    if (factorization == nullptr ||
-        !factorization->OperatorDomainMap().SameAs(crs.RowMap()))
-      factorization = std::make_shared<Factorization>(crs);
-    preconditioner.reset();
-    if (!factorization->factorize(crs))
-      return false;
-    preconditioner = Teuchos::rcp(factorization.get(), false);
-    return true;
+    return refactorize(matrix, factorization, preconditioner);
   }
 
 
