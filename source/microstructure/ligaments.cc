@@ -47,12 +47,16 @@ namespace ssc
     }
 
 
-    /// Whether the ligaments are drawn in a rectangle beyond the region of
-    /// interest (Realisation half width) and cut to it afterwards.
+    /// Whether a ligament at (x, y) is drawn: anywhere in the rectangle with
+    /// a Realisation half width (the region cuts them afterwards), only
+    /// inside the region of interest otherwise.
     bool
-    drawn_beyond_region(const MicrostructureParameters &parameters)
+    drawn_at(const MicrostructureParameters &parameters,
+             const double                    x,
+             const double                    y)
     {
-      return parameters.region.realisation_half_width > 0;
+      return parameters.region.realisation_half_width > 0 ||
+             parameters.region.contains(x, y);
     }
   } // namespace
 
@@ -89,8 +93,7 @@ namespace ssc
                 AssertThrow(false, ExcMessage(message.str()));
               }
             maximum = std::max(maximum, rho);
-            if (q < gauss.size() && (drawn_beyond_region(parameters) ||
-                                     parameters.region.contains(p[0], p[1])))
+            if (q < gauss.size() && drawn_at(parameters, p[0], p[1]))
               expected += gauss.weight(q) * hx * hy * rho / 100.;
           }
   }
@@ -126,8 +129,7 @@ namespace ssc
         const double x = lo[0] + uniform(generator) * (hi[0] - lo[0]);
         const double y = lo[1] + uniform(generator) * (hi[1] - lo[1]);
         const double u = uniform(generator);
-        if (!(drawn_beyond_region(parameters) ||
-              parameters.region.contains(x, y)) ||
+        if (!drawn_at(parameters, x, y) ||
             u * bound > density.density->value(Point<2>(x, y)))
           continue;
         ligaments.push_back(
