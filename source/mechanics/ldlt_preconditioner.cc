@@ -69,29 +69,30 @@ namespace ssc
     bool
     factorize(const Epetra_CrsMatrix &matrix)
     {
-      usable                       = false; // until this factorisation succeeds
-      UpperTriangle          upper = upper_triangle(matrix);
-      const int              n     = matrix.NumMyRows();
-      std::vector<MUMPS_INT> row, column;
-      row.reserve(upper.column.size());
-      column.reserve(upper.column.size());
-      for (int i = 0; i < n; ++i)
-        for (int k = upper.row_start[i]; k < upper.row_start[i + 1]; ++k)
-          {
-            row.push_back(i + 1);
-            column.push_back(upper.column[k] + 1);
-          }
-      value = std::move(upper.value);
-      id.a  = value.data();
-      if (!analysed || row != pattern_row || column != pattern_column)
+      usable              = false; // until this factorisation succeeds
+      const int     n     = matrix.NumMyRows();
+      UpperTriangle upper = upper_triangle(matrix);
+      value               = std::move(upper.value);
+      id.a                = value.data();
+      if (!analysed || upper.row_start != pattern.row_start ||
+          upper.column != pattern.column)
         {
-          pattern_row    = std::move(row);
-          pattern_column = std::move(column);
-          id.n           = n;
-          id.nnz         = pattern_row.size();
-          id.irn         = pattern_row.data();
-          id.jcn         = pattern_column.data();
-          id.job         = 1;
+          // MUMPS reads the triangle as coordinates, 1-based
+          pattern = std::move(upper);
+          row.clear();
+          column.clear();
+          for (int i = 0; i < n; ++i)
+            for (int k = pattern.row_start[i]; k < pattern.row_start[i + 1];
+                 ++k)
+              {
+                row.push_back(i + 1);
+                column.push_back(pattern.column[k] + 1);
+              }
+          id.n   = n;
+          id.nnz = row.size();
+          id.irn = row.data();
+          id.jcn = column.data();
+          id.job = 1;
           dmumps_c(&id);
           AssertThrow(infog(id, 1) >= 0,
                       ExcMessage("MUMPS could not analyse the matrix (" +
@@ -167,7 +168,9 @@ namespace ssc
     mutable DMUMPS_STRUC_C id       = {};
     bool                   analysed = false;
     bool                   usable   = false;
-    std::vector<MUMPS_INT> pattern_row, pattern_column;
+    /// the pattern of the analysed matrix, and its coordinates for MUMPS
+    UpperTriangle          pattern;
+    std::vector<MUMPS_INT> row, column;
     std::vector<double>    value;
   };
 

@@ -81,13 +81,6 @@ namespace ssc
   bool
   refactorize(const TrilinosWrappers::SparseMatrix &matrix,
               std::shared_ptr<Factorization>       &factorization,
-              Teuchos::RCP<Epetra_Operator>        &preconditioner);
-
-
-  template <typename Factorization>
-  bool
-  refactorize(const TrilinosWrappers::SparseMatrix &matrix,
-              std::shared_ptr<Factorization>       &factorization,
               Teuchos::RCP<Epetra_Operator>        &preconditioner)
   {
     CholeskyPreconditioner::require_one_process(matrix.get_mpi_communicator());
