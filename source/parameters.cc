@@ -261,6 +261,11 @@ namespace ssc
                              "the box layout, "
                              "without Microstructure/Lobules or Ligaments "
                              "and without Punch/Edge contact."));
+    AssertThrow(punch.contact != PunchContact::friction || layers.nonlinear(),
+                ExcMessage("Punch/Contact = friction is nonlinear: it needs "
+                           "Newton's method, so give at least one layer a "
+                           "nonlinear Material model (corotational or "
+                           "neo-Hookean)."));
     AssertThrow(!punch.edge_contact || layers.nonlinear(),
                 ExcMessage("Punch/Edge contact needs Newton's method: give "
                            "at least one layer a nonlinear Material model "

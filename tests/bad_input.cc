@@ -152,6 +152,9 @@ main(int argc, char **argv)
   check("punch tied on its flat face without the edge contact",
         std::string(valid_stack) +
           "subsection Punch\n  set Tied region = flat face\nend\n");
+  check("punch friction on linear elasticity",
+        std::string(valid_stack) +
+          "subsection Punch\n  set Contact = friction\nend\n");
   check("volumetric stabilisation without the mean dilatation",
         std::string(valid_stack) +
           "subsection Layer stack\n  subsection fat\n"

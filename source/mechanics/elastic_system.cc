@@ -43,9 +43,35 @@ namespace ssc
 
 
   void
-  ElasticSystem::attach(const DofContribution &contribution)
+  ElasticSystem::attach(DofContribution &contribution)
   {
     assembler.attach(contribution);
+    dof_contributions.push_back(&contribution);
+  }
+
+
+  void
+  ElasticSystem::accept_state()
+  {
+    for (DofContribution *contribution : dof_contributions)
+      contribution->accept(displacement.solution());
+  }
+
+
+  TrilinosWrappers::MPI::Vector
+  ElasticSystem::nodal_residual()
+  {
+    TimerOutput::Scope            t(timer, "assembly");
+    TrilinosWrappers::MPI::Vector rhs(
+      displacement.locally_owned_dofs(),
+      displacement.triangulation().get_communicator());
+    assembler.assemble(displacement.solution(),
+                       boundary_constraints.hanging_nodes(),
+                       external_loads.body_force,
+                       nullptr,
+                       rhs);
+    rhs *= -1.;
+    return rhs;
   }
 
 

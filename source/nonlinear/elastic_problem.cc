@@ -160,4 +160,11 @@ namespace ssc
   {
     return system.field().describe(change);
   }
+
+
+  void
+  ElasticProblem::accept_state()
+  {
+    system.accept_state();
+  }
 } // namespace ssc

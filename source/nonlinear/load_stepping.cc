@@ -44,6 +44,7 @@ namespace ssc
         report.linear_iterations += result.linear_iterations;
         if (result.converged)
           {
+            problem.accept_state();
             last_change = problem.state();
             last_change -= start;
             last_load_increment = next - position;

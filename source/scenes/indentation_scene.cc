@@ -69,6 +69,8 @@ namespace ssc
     std::vector<double>              depths, forces;
     std::vector<std::vector<double>> profiles;
     std::vector<double>              contact_areas, contact_penetrations;
+    std::vector<unsigned int>        sticking, slipping;
+    std::vector<double>              friction_normal_forces;
     double                           tie_balance = 0;
 
     const auto on_step = [&](const unsigned int step) {
@@ -101,6 +103,19 @@ namespace ssc
             pcout << "  edge contact: " << area
                   << " mm^2 of skin, largest penetration " << penetration
                   << " mm" << std::endl;
+        }
+      if (const PunchFriction *friction = loading.friction())
+        {
+          const FrictionState &state = friction->accepted_state();
+          sticking.push_back(state.sticking);
+          slipping.push_back(state.slipping);
+          // the whole punch's, as the force
+          friction_normal_forces.push_back(state.normal_force *
+                                           parameters.mesh.symmetry_factor());
+          if (!run.test_mode)
+            pcout << "  friction: " << state.sticking << " nodes stick, "
+                  << state.slipping << " slip, " << state.free << " not pressed"
+                  << std::endl;
         }
       forces.push_back(force);
       depths.push_back(depth);
@@ -185,6 +200,17 @@ namespace ssc
                                  {"area_mm2_per_step", contact_areas},
                                  {"max_penetration_mm_per_step",
                                   contact_penetrations}};
+    if (loading.friction())
+      summary["friction"] = {
+        {"coefficient", punch.friction_coefficient},
+        {"penalty_factor", punch.friction_penalty},
+        {"nodes", loading.friction()->n_nodes()},
+        {"sticking_nodes_per_step", sticking},
+        {"slipping_nodes_per_step", slipping},
+        {"normal_force_N_per_step", friction_normal_forces},
+        {"note",
+         "normal forces of the tie at the last accepted increment before "
+         "the step's (staggered)"}};
     summary["symmetry"]       = to_string(parameters.mesh.symmetry);
     summary["punch_shape"]    = to_string(punch.shape);
     summary["punch_area_mm2"] = punch.area();

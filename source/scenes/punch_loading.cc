@@ -100,6 +100,22 @@ namespace ssc
     // force control, the prescribed displacement otherwise
     punch_condition = by_force ? conditions.size() : conditions.size() - 1;
 
+    if (punch.contact == PunchContact::friction)
+      {
+        face_friction = std::make_unique<PunchFriction>(
+          punch.friction_coefficient,
+          punch.friction_penalty,
+          parameters.layers.layer(0).youngs_modulus,
+          system.field().dof_handler(),
+          system.field().mapping(),
+          BoundaryId::top,
+          on_punch,
+          [&system]() { return system.nodal_residual(); });
+        system.attach(*face_friction);
+        pcout << "Punch friction: " << face_friction->n_nodes()
+              << " skin nodes under the face, mu = "
+              << punch.friction_coefficient << std::endl;
+      }
     if (punch.edge_contact)
       {
         // the surface faces that wrapping around the edge can bring into

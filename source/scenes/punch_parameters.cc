@@ -78,7 +78,27 @@ namespace ssc
                       "bonded: the skin under the punch moves with it (no "
                       "slip); frictionless: only the vertical displacement "
                       "is the punch's, the skin slides freely under it "
-                      "(Sneddon 1965).");
+                      "(Sneddon 1965); friction: the vertical displacement "
+                      "is the punch's and the skin sticks to the face until "
+                      "the shear force at a node reaches Friction "
+                      "coefficient times its normal force, then slips "
+                      "(Coulomb; finite strain only).");
+    prm.add_parameter(
+      "Friction coefficient",
+      friction_coefficient,
+      "Coulomb's coefficient mu between the punch and the skin (Contact = "
+      "friction). Dry skin on steel or glass measures 0.2-0.8 in vivo, "
+      "rising with moisture (Derler and Gerhardt, Tribol Lett 45:1, 2012).",
+      Patterns::Double(0));
+    prm.add_parameter(
+      "Friction penalty",
+      friction_penalty,
+      "Stick stiffness of the regularised friction (Contact = friction): a "
+      "node's tangential spring is (factor) E / h times its share of the "
+      "surface area, E the top layer's Young's modulus and h the face size, "
+      "so a sticking node slips elastically about h/(factor) at a shear "
+      "traction E.",
+      Patterns::Double(0));
     prm.add_parameter("Control",
                       control,
                       "displacement: the depth is prescribed (Depth, Load "
@@ -171,6 +191,8 @@ namespace ssc
     AssertThrow(!edge_contact || contact_penalty > 0,
                 ExcMessage("Punch/Contact penalty must be positive."));
     AssertThrow(radius > 0, ExcMessage("Punch/Radius must be positive (mm)."));
+    AssertThrow(contact != PunchContact::friction || friction_penalty > 0,
+                ExcMessage("Punch/Friction penalty must be positive."));
     AssertThrow(tied_region == PunchTiedRegion::whole_face ||
                   (edge_contact && edge_radius < radius),
                 ExcMessage("Punch/Tied region = flat face leaves the skin "

@@ -44,6 +44,15 @@ namespace ssc
     add_nonlinear(const TrilinosWrappers::MPI::Vector &u,
                   const bool                           with_tangent,
                   const BlockSink                     &add) const = 0;
+
+    /// The (locally relevant) state @p u is a converged load increment:
+    /// history variables (where friction sticks) move on to it. Nothing
+    /// by default.
+    virtual void
+    accept(const TrilinosWrappers::MPI::Vector &u)
+    {
+      (void)u;
+    }
   };
 } // namespace ssc
 

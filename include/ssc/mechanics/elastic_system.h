@@ -90,9 +90,25 @@ namespace ssc
     attach(const CellContribution &contribution);
 
     /// Adds @p contribution (e.g. punch contact) to the sparsity pattern and
-    /// the assemblies; attach before setup().
+    /// the assemblies; attach before setup(). It is told of every converged
+    /// load increment (accept_state()).
     void
-    attach(const DofContribution &contribution);
+    attach(DofContribution &contribution);
+
+    /// The current state is a converged load increment: the attached dof
+    /// contributions' history moves on to it.
+    void
+    accept_state();
+
+    /**
+     * The residual r = f_int(u) - f_ext of the cells and dof contributions
+     * at every dof (locally owned entries), before any boundary condition,
+     * with the hanging nodes' entries distributed to the dofs they depend
+     * on: on a prescribed or tied dof it is the force (N) the body exerts
+     * on that condition there (collective).
+     */
+    TrilinosWrappers::MPI::Vector
+    nodal_residual();
 
     /// Constraints, sparsity pattern and matrix for @p conditions and @p
     /// ties (after the field's dofs are distributed).
@@ -208,6 +224,8 @@ namespace ssc
     TrilinosWrappers::SparseMatrix  matrix;
     TrilinosWrappers::MPI::Vector   system_rhs;
     TrilinosWrappers::MPI::Vector   last_update;
+    /// the attached dof contributions, told of converged increments
+    std::vector<DofContribution *> dof_contributions;
   };
 } // namespace ssc
 

@@ -69,6 +69,9 @@ namespace ssc
     std::string
     describe_change(const VectorType &change) const override;
 
+    void
+    accept_state() override;
+
   private:
     /// The last update with its constrained entries zeroed.
     VectorType

@@ -98,6 +98,12 @@ namespace ssc
     /// Where a change of the state lives, for diagnostics.
     virtual std::string
     describe_change(const VectorType &change) const = 0;
+
+    /// The current state is a converged load increment: history variables
+    /// (e.g. where friction sticks) move on to it. Nothing by default.
+    virtual void
+    accept_state()
+    {}
   };
 } // namespace ssc
 

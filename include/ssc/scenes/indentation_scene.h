@@ -47,7 +47,8 @@ namespace ssc
 
     /// Half-space stiffness F/delta of a rigid flat punch of radius @p a on
     /// a material (E, nu): Sneddon (frictionless) or Mossakovskii/Spence
-    /// (bonded, no slip).
+    /// (bonded, no slip; also for a punch with friction, whose stiffness
+    /// lies between the two).
     static double
     half_space_stiffness(const double       a,
                          const double       E,

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include <ssc/mechanics/elastic_system.h>
+#include <ssc/mechanics/punch_friction.h>
 #include <ssc/mechanics/rigid_punch_contact.h>
 #include <ssc/parameters.h>
 
@@ -17,7 +18,8 @@ namespace ssc
    * conditions of the elastic system: the patch's supports, u_x = u_y = 0
    * under the punch if it is bonded, and u_z = -depth (displacement
    * control) or u_z tied to one master dof that carries the force (force
-   * control); optionally the skin's contact with the punch's rounded edge.
+   * control); Coulomb friction on the face if asked for; optionally the
+   * skin's contact with the punch's rounded edge.
    * The load parameter is the depth (mm) or the force (N).
    */
   class PunchLoading
@@ -54,6 +56,13 @@ namespace ssc
       return contact.get();
     }
 
+    /// The friction on the face (null unless Contact = friction).
+    PunchFriction *
+    friction()
+    {
+      return face_friction.get();
+    }
+
     bool
     force_control() const
     {
@@ -67,6 +76,7 @@ namespace ssc
     const double                       symmetry_factor;
     unsigned int                       punch_condition = 0;
     std::unique_ptr<RigidPunchContact> contact;
+    std::unique_ptr<PunchFriction>     face_friction;
   };
 } // namespace ssc
 

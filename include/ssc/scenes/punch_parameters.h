@@ -14,18 +14,21 @@ namespace ssc
   using namespace dealii;
 
   /// Bonded: the punch holds all displacement components of the skin under
-  /// it; frictionless: only the vertical one (Sneddon's problem).
+  /// it; frictionless: only the vertical one (Sneddon's problem); friction:
+  /// the vertical one, and Coulomb friction acts in the tangential ones.
   enum class PunchContact
   {
     bonded,
-    frictionless
+    frictionless,
+    friction
   };
 
-  constexpr std::array<std::pair<PunchContact, const char *>, 2>
+  constexpr std::array<std::pair<PunchContact, const char *>, 3>
   enum_table(PunchContact)
   {
     return {{{PunchContact::bonded, "bonded"},
-             {PunchContact::frictionless, "frictionless"}}};
+             {PunchContact::frictionless, "frictionless"},
+             {PunchContact::friction, "friction"}}};
   }
 
   /// Which skin nodes the punch holds (the tie): all under its radius, or
@@ -85,13 +88,15 @@ namespace ssc
     unsigned int        load_steps = 1;
     std::vector<double> forces     = {0.35, 0.5, 0.75, 1.0, 1.25, 1.5, 1.8};
     std::vector<double> depth_uncertainty;
-    double              profile_length  = 30;
-    unsigned int        profile_points  = 301;
-    bool                section         = true;
-    bool                edge_contact    = false;
-    double              edge_radius     = 0.5;
-    double              contact_penalty = 100;
-    PunchTiedRegion     tied_region     = PunchTiedRegion::whole_face;
+    double              profile_length       = 30;
+    unsigned int        profile_points       = 301;
+    bool                section              = true;
+    bool                edge_contact         = false;
+    double              edge_radius          = 0.5;
+    double              contact_penalty      = 100;
+    PunchTiedRegion     tied_region          = PunchTiedRegion::whole_face;
+    double              friction_coefficient = 0.5;
+    double              friction_penalty     = 100;
 
     /// Whether the point (x, y, .) lies on the punch's face (edges
     /// included, to round-off).
