@@ -7,8 +7,8 @@
 // s* = mu N / K = 1.25 mm, and slides beyond with F_t = mu N = 0.05 N. The
 // friction force on the face must also balance the shear reaction of the
 // fixed bottom (equilibrium, independent of the friction's bookkeeping),
-// and the tie's normal forces must add up to N (they lag one increment:
-// the press's second half was solved with the first half's 0.05 N).
+// and the tie's normal forces must add up to N (each increment is solved
+// again until they settle, so also the first).
 // Between the two regimes the block slips partially: the drag at its top
 // and the bottom's reaction form a couple that the normal forces balance,
 // loading the leading edge more (about +-50 % at F_t = mu N), so the

@@ -50,11 +50,13 @@ namespace ssc
   }
 
 
-  void
+  bool
   ElasticSystem::accept_state()
   {
+    bool accepted = true;
     for (DofContribution *contribution : dof_contributions)
-      contribution->accept(displacement.solution());
+      accepted = contribution->accept(displacement.solution()) && accepted;
+    return accepted;
   }
 
 

@@ -152,9 +152,31 @@ namespace ssc
   }
 
 
-  void
+  bool
   PunchFriction::accept(const TrilinosWrappers::MPI::Vector &u)
   {
+    // the body presses on the punch where the vertical residual is negative
+    const TrilinosWrappers::MPI::Vector residual = nodal_residual();
+    std::vector<double>                 normal_forces;
+    double                              change = 0, total = 0;
+    for (const Node &node : nodes)
+      {
+        normal_forces.push_back(std::max(-residual[node.dofs[2]], 0.));
+        change += std::abs(normal_forces.back() - node.normal_force);
+        total += normal_forces.back();
+      }
+    change = Utilities::MPI::sum(change, mpi_communicator);
+    total  = Utilities::MPI::sum(total, mpi_communicator);
+    ++passes;
+    const bool settled = change <= settled_change * total;
+    if (!settled && passes < max_passes)
+      {
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          nodes[i].normal_force = normal_forces[i];
+        return false;
+      }
+    passes = 0;
+
     // the state the increment was solved with, then the stick points with
     // its normal forces
     FrictionState state;
@@ -180,10 +202,9 @@ namespace ssc
       Utilities::MPI::sum(state.tangential_force, mpi_communicator);
     last_state.normal_force =
       Utilities::MPI::sum(state.normal_force, mpi_communicator);
-    // the body presses on the punch where the vertical residual is negative
-    const TrilinosWrappers::MPI::Vector residual = nodal_residual();
-    for (Node &node : nodes)
-      node.normal_force = std::max(-residual[node.dofs[2]], 0.);
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      nodes[i].normal_force = normal_forces[i];
+    return true;
   }
 
 

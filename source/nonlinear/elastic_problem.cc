@@ -162,9 +162,9 @@ namespace ssc
   }
 
 
-  void
+  bool
   ElasticProblem::accept_state()
   {
-    system.accept_state();
+    return system.accept_state();
   }
 } // namespace ssc

@@ -38,13 +38,27 @@ namespace ssc
         const double next  = std::min(position + increment, to);
         const auto   start = problem.state();
         apply_load(next);
-        const bool         predicted = predict(start, position, next);
-        const NewtonReport result    = newton.solve();
+        const bool   predicted = predict(start, position, next);
+        NewtonReport result    = newton.solve();
         report.newton_iterations += result.iterations;
         report.linear_iterations += result.linear_iterations;
+        unsigned int iterations = result.iterations, passes = 1;
+        // what the solve took as fixed (friction's normal forces) may have
+        // moved too far: solve again from here with it updated
+        while (result.converged && !problem.accept_state())
+          {
+            result = newton.solve();
+            report.newton_iterations += result.iterations;
+            report.linear_iterations += result.linear_iterations;
+            iterations += result.iterations;
+            ++passes;
+            if (newton.reports_iterations())
+              pcout << "  load " << std::setprecision(6) << next
+                    << ": solved again with the updated history ("
+                    << result.iterations << " Newton iterations)" << std::endl;
+          }
         if (result.converged)
           {
-            problem.accept_state();
             last_change = problem.state();
             last_change -= start;
             last_load_increment = next - position;
@@ -53,8 +67,8 @@ namespace ssc
             report.last_residuals = result.residuals;
             if (newton.reports_iterations())
               pcout << "  load " << std::setprecision(6) << position << ": "
-                    << result.iterations << " Newton iterations" << std::endl;
-            if (result.iterations <= parameters.easy_iterations)
+                    << iterations << " Newton iterations" << std::endl;
+            if (iterations <= parameters.easy_iterations)
               increment *= parameters.growth_factor;
             continue;
           }
@@ -64,16 +78,16 @@ namespace ssc
         // any smaller increment too (the absolute floors of its tolerance
         // lie far below the smallest increment allowed), and cutting would
         // only crawl.
-        AssertThrow(!(result.linear_failure_at_start && !predicted &&
-                      dependence == LoadDependence::right_hand_side),
-                    ExcMessage(
-                      "Newton's method failed at load " +
-                      std::to_string(position) + " (" + result.failure +
-                      ") on the first update of the increment. Its "
-                      "tangent is that of the converged state whatever "
-                      "the increment, so a smaller increment cannot "
-                      "help. (Poisson's ratios near 0.5 make the "
-                      "tangent hard for the AMG-preconditioned CG.)"));
+        AssertThrow(
+          !(result.linear_failure_at_start && !predicted && passes == 1 &&
+            dependence == LoadDependence::right_hand_side),
+          ExcMessage("Newton's method failed at load " +
+                     std::to_string(position) + " (" + result.failure +
+                     ") on the first update of the increment. Its "
+                     "tangent is that of the converged state whatever "
+                     "the increment, so a smaller increment cannot "
+                     "help. (Poisson's ratios near 0.5 make the "
+                     "tangent hard for the AMG-preconditioned CG.)"));
         // back to the last converged state, with half the increment
         problem.set_state(start);
         apply_load(position);

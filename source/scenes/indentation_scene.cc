@@ -209,8 +209,8 @@ namespace ssc
         {"slipping_nodes_per_step", slipping},
         {"normal_force_N_per_step", friction_normal_forces},
         {"note",
-         "normal forces of the tie at the last accepted increment before "
-         "the step's (staggered)"}};
+         "normal forces: the tie's reactions the last solve of the step "
+         "used, settled to 2 % (staggered)"}};
     summary["symmetry"]       = to_string(parameters.mesh.symmetry);
     summary["punch_shape"]    = to_string(punch.shape);
     summary["punch_area_mm2"] = punch.area();

@@ -45,13 +45,13 @@ namespace ssc
                   const bool                           with_tangent,
                   const BlockSink                     &add) const = 0;
 
-    /// The (locally relevant) state @p u is a converged load increment:
-    /// history variables (where friction sticks) move on to it. Nothing
-    /// by default.
-    virtual void
+    /// The (locally relevant) state @p u solves the load increment: see
+    /// NonlinearProblem::accept_state() (collective). True by default.
+    virtual bool
     accept(const TrilinosWrappers::MPI::Vector &u)
     {
       (void)u;
+      return true;
     }
   };
 } // namespace ssc

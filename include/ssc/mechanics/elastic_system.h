@@ -95,9 +95,11 @@ namespace ssc
     void
     attach(DofContribution &contribution);
 
-    /// The current state is a converged load increment: the attached dof
-    /// contributions' history moves on to it.
-    void
+    /// The current state solves the load increment: the attached dof
+    /// contributions' history moves on to it, unless one of them asks for
+    /// the increment to be solved again (false; see
+    /// NonlinearProblem::accept_state()).
+    bool
     accept_state();
 
     /**

@@ -45,10 +45,11 @@ namespace ssc
    * Coulomb law). With the stick points and normal forces frozen during a
    * load increment the energy is convex and C^1, the tangent symmetric
    * positive semi-definite, so Newton's method and its line search see an
-   * energy as everywhere else. After each converged increment (accept())
-   * the stick points of slipping nodes move with them, and the normal
-   * forces become the tie's reactions at the nodes: the normal force lags
-   * one increment (staggered), so the first increment is frictionless.
+   * energy as everywhere else. After each converged solve (accept()) the
+   * normal forces become the tie's reactions at the nodes; if they moved by
+   * more than 2 % (summed over the nodes), the increment is solved again
+   * with them (a staggered fixed point, at most 8 passes), else the stick
+   * points of slipping nodes move with them and the next increment starts.
    *
    * k_i = (penalty factor) E/h times the node's share of the surface area
    * (the integral of its shape function), h the face size and E the top
@@ -82,9 +83,11 @@ namespace ssc
                   const bool                           with_tangent,
                   const BlockSink                     &add) const override;
 
-    /// Moves the stick points of slipping nodes and takes the normal forces
-    /// from the tie's reactions at @p u (collective).
-    void
+    /// Takes the normal forces from the tie's reactions at @p u; if they
+    /// have settled, moves the stick points of slipping nodes and returns
+    /// true, else returns false to have the increment solved again
+    /// (collective).
+    bool
     accept(const TrilinosWrappers::MPI::Vector &u) override;
 
     /// Moves the punch sideways to @p offset (x, y, mm) from where it
@@ -128,12 +131,19 @@ namespace ssc
     std::pair<Tensor<1, 2>, bool>
     force(const Node &node, const Tensor<1, 2> &d) const;
 
+    /// Relative change of the normal forces (summed over the nodes) below
+    /// which they count as settled, and the most solves of one increment.
+    static constexpr double       settled_change = 0.02;
+    static constexpr unsigned int max_passes     = 8;
+
     const double                                   coefficient;
     std::function<TrilinosWrappers::MPI::Vector()> nodal_residual;
     MPI_Comm                                       mpi_communicator;
     std::vector<Node>                              nodes;
     Tensor<1, 2>                                   offset;
     FrictionState                                  last_state;
+    /// solves of the current increment so far
+    unsigned int passes = 0;
   };
 } // namespace ssc
 

@@ -69,7 +69,7 @@ namespace ssc
     std::string
     describe_change(const VectorType &change) const override;
 
-    void
+    bool
     accept_state() override;
 
   private:

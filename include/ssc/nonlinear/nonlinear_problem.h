@@ -99,11 +99,18 @@ namespace ssc
     virtual std::string
     describe_change(const VectorType &change) const = 0;
 
-    /// The current state is a converged load increment: history variables
-    /// (e.g. where friction sticks) move on to it. Nothing by default.
-    virtual void
+    /**
+     * The current state solves the load increment: history variables (e.g.
+     * where friction sticks) move on to it and true is returned, or, if
+     * quantities the solve took as fixed (friction's normal forces) have
+     * changed too much, they are updated, the history stays, and false asks
+     * for the increment to be solved again. True by default.
+     */
+    virtual bool
     accept_state()
-    {}
+    {
+      return true;
+    }
   };
 } // namespace ssc
 
