@@ -4,8 +4,11 @@
 // indentation at finite strain, with a 1.5 mm edge rounding on a 3 mm punch:
 // the punch goes deeper at the same force than when it holds the whole face
 // (a sharp rim at 3 mm), the skin beyond the tie is in contact with the
-// rounding, and prescribing the depth found gives back the force (the
-// contact on the rounding is counted on the punch under both controls).
+// rounding, which carries it: the punch goes clearly less deep than a
+// punch of the flat face's radius alone (the skin under the rounding was
+// once left out of the contact, and then it did not), and prescribing the
+// depth found gives back the force (the contact on the rounding is counted
+// on the punch under both controls).
 
 #include <nlohmann/json.hpp>
 
@@ -42,14 +45,26 @@ main(int argc, char **argv)
   std::ifstream  file("results/tied_flat_face/summary.json");
   nlohmann::json summary = nlohmann::json::parse(file);
   const double   area    = summary["edge_contact"]["area_mm2_per_step"].back();
+  // the flat face alone: a punch of radius R - rho whose edge is nearly
+  // sharp, so that nothing but its face carries the skin
+  const auto bare = run({"Punch/Forces=0.2",
+                         "Punch/Radius=1.5",
+                         "Punch/Edge radius=0.05",
+                         "Run/Name=tied_bare_flat_face"});
   dealii::deallog << std::setprecision(3) << "0.2 N: depth "
                   << whole.depths.back() << " mm tied on the whole face, "
-                  << flat.depths.back()
-                  << " mm on the flat face; deeper on the flat face: "
+                  << flat.depths.back() << " mm on the flat face, "
+                  << bare.depths.back()
+                  << " mm for the flat face alone; deeper on the flat face: "
                   << (flat.depths.back() > whole.depths.back() ? "yes" : "no")
                   << "; skin in contact with the rounding (area above 1 "
                      "mm^2): "
-                  << (area > 1. ? "yes" : "no") << std::endl;
+                  << (area > 1. ? "yes" : "no")
+                  << "; the rounding carries the skin (at least 10 % "
+                     "shallower than the flat face alone): "
+                  << (flat.depths.back() < 0.9 * bare.depths.back() ? "yes" :
+                                                                      "no")
+                  << std::endl;
 
   std::ostringstream depth;
   depth << std::setprecision(17) << flat.depths.back();

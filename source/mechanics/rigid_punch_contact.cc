@@ -59,14 +59,15 @@ namespace ssc
 
 
   RigidPunchContact::RigidPunchContact(
-    const PunchGeometry                     &geometry,
-    const double                             penalty_factor,
-    const double                             youngs_modulus,
-    const double                             reach,
-    const DoFHandler<3>                     &dof_handler,
-    const Mapping<3>                        &mapping,
-    const types::boundary_id                 top,
-    std::function<types::global_dof_index()> face_dof)
+    const PunchGeometry                         &geometry,
+    const double                                 penalty_factor,
+    const double                                 youngs_modulus,
+    const double                                 reach,
+    const DoFHandler<3>                         &dof_handler,
+    const Mapping<3>                            &mapping,
+    const types::boundary_id                     top,
+    const std::function<bool(const Point<3> &)> &held,
+    std::function<types::global_dof_index()>     face_dof)
     : geometry(geometry)
     , face_dof(std::move(face_dof))
     , mpi_communicator(dof_handler.get_communicator())
@@ -90,12 +91,11 @@ namespace ssc
             if (!face->at_boundary() || face->boundary_id() != top ||
                 radius_of(face->center()) > reach)
               continue;
-            bool beyond_radius = false;
+            bool free = false;
             for (unsigned int v = 0; v < face->n_vertices(); ++v)
-              beyond_radius = beyond_radius || radius_of(face->vertex(v)) >
-                                                 geometry.radius * (1. + 1e-10);
-            if (!beyond_radius)
-              continue; // under the punch: held at its face
+              free = free || !held(face->vertex(v));
+            if (!free)
+              continue; // held by the punch's tie
             fe_face_values.reinit(cell, f);
             cell->get_dof_indices(cell_dofs);
             Face                      contact_face;

@@ -129,6 +129,7 @@ namespace ssc
           system.field().dof_handler(),
           system.field().mapping(),
           BoundaryId::top,
+          on_punch,
           [&system]() { return system.constraints().master_dof(0); });
         system.attach(*contact);
         pcout << "Edge contact: " << contact->n_faces()

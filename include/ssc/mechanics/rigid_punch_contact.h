@@ -65,19 +65,21 @@ namespace ssc
   {
   public:
     /**
-     * Takes the locally owned top faces (boundary @p top) that reach
-     * beyond the punch radius and whose centre lies within @p reach of the
-     * axis. @p face_dof gives the dof whose value is the face height
-     * (called once the ties exist).
+     * Takes the locally owned top faces (boundary @p top) with a vertex
+     * that the punch does not hold (@p held false: beyond the tied region,
+     * under the rounding or beyond the rim) and whose centre lies within
+     * @p reach of the axis. @p face_dof gives the dof whose value is the
+     * face height (called once the ties exist).
      */
-    RigidPunchContact(const PunchGeometry                     &geometry,
-                      const double                             penalty_factor,
-                      const double                             youngs_modulus,
-                      const double                             reach,
-                      const DoFHandler<3>                     &dof_handler,
-                      const Mapping<3>                        &mapping,
-                      const types::boundary_id                 top,
-                      std::function<types::global_dof_index()> face_dof);
+    RigidPunchContact(const PunchGeometry     &geometry,
+                      const double             penalty_factor,
+                      const double             youngs_modulus,
+                      const double             reach,
+                      const DoFHandler<3>     &dof_handler,
+                      const Mapping<3>        &mapping,
+                      const types::boundary_id top,
+                      const std::function<bool(const Point<3> &)> &held,
+                      std::function<types::global_dof_index()>     face_dof);
 
     std::vector<std::vector<types::global_dof_index>>
     couplings() const override;
