@@ -276,6 +276,13 @@ def quick(ssc, workdir, depths=(0.25, 0.5), tolerance=0.01):
     shutil.rmtree(workdir, ignore_errors=True)  # nothing kept: run both
     c = ccx_forces(1, 0.05, list(depths), workdir)
     s = ssc_forces((8, 0.2, 1.6), list(depths), workdir, True, ssc)
+    return compare_quick(c, s, depths, tolerance)
+
+
+def compare_quick(c, s, depths, tolerance):
+    """Prints ccx's (c) and ssc's (s) forces at each depth and whether they
+    agree within tolerance; returns the exit status (1 if not, or if a
+    depth was not reached)."""
     status = 0
     for d in depths:
         fc = dict(zip(c["depths"], c["forces"])).get(d)
