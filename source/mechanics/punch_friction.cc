@@ -80,6 +80,14 @@ namespace ssc
           Node node;
           node.dofs      = dofs;
           node.stiffness = stiffness[x_dof];
+          // a stick point is where the friction force over k_i leaves it
+          AssertThrow(node.stiffness > 0,
+                      ExcMessage("Punch friction: a skin node under the "
+                                 "punch has no surface area of its own (its "
+                                 "shape function integrates to zero on the "
+                                 "surface), so it can carry no friction; "
+                                 "use Lagrange elements on undistorted "
+                                 "surface faces."));
           nodes.push_back(node);
         }
   }
