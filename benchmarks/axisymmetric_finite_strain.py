@@ -124,6 +124,24 @@ def ccx_input(r, z, depths, element="CAX8R", bonded=True):
     return "\n".join(L) + "\n", (len(r) - 1) * (len(z) - 1)
 
 
+def kept_ccx_run(workdir, job, text):
+    """Runs ccx on text as job unless an earlier run of the same input is
+    kept in workdir; a run that stops without converging keeps what it
+    printed. Returns (the .dat file's text, dict(equations, time_s), None
+    and nan for a kept run)."""
+    inp, dat_file = (os.path.join(workdir, job + ext)
+                     for ext in (".inp", ".dat"))
+    out = dict(equations=None, time_s=float("nan"))
+    if not (os.path.exists(dat_file) and os.path.exists(inp) and
+            open(inp).read() == text):
+        try:
+            out = cp.run_ccx(workdir, job, text)
+        except RuntimeError:  # no convergence: keep what was printed
+            pass
+    with open(dat_file) as f:
+        return f.read(), out
+
+
 def ccx_forces(level, edge_size, depths, workdir, element="CAX8R",
                bonded=True):
     """Punch force (N) at each of depths that ccx reaches on the level's
@@ -133,19 +151,7 @@ def ccx_forces(level, edge_size, depths, workdir, element="CAX8R",
     text, cells = ccx_input(r, z, depths, element, bonded)
     job = (f"forearm_layers_{'bonded' if bonded else 'frictionless'}_"
            f"{element}_l{level}_h{edge_size}")
-    inp, dat_file = (os.path.join(workdir, job + ext)
-                     for ext in (".inp", ".dat"))
-    out = dict(equations=None, time_s=float("nan"))
-    if os.path.exists(dat_file) and os.path.exists(inp) and \
-            open(inp).read() == text:
-        pass  # kept from an earlier run of this input
-    else:
-        try:
-            out = cp.run_ccx(workdir, job, text)
-        except RuntimeError:  # no convergence: keep what was printed
-            pass
-    with open(dat_file) as f:
-        dat = f.read()
+    dat, out = kept_ccx_run(workdir, job, text)
     times = [float(t) for t in re.findall(
         r"total force \(fx,fy,fz\) for set \S+ and time\s+(\S+)", dat)]
     fy = [f[1] for f in cp.total_forces(dat)]
@@ -169,23 +175,29 @@ SSC_TIMEOUT = 1200  # s: beyond the depths a mesh can reach Newton crawls
 CCX_MESHES = [(0, 0.2), (1, 0.1), (1, 0.05), (2, 0.025)]
 
 
-def ssc_forces(mesh, depths, workdir, bonded=True, ssc=SSC):
+def ssc_forces(mesh, depths, workdir, bonded=True, ssc=SSC, overrides=(),
+               prefix="ogrid"):
     """Punch force (N) at each of depths (equal steps from 0) that ssc
     reaches on the o-grid mesh (n, h, q), one process (the Cholesky
-    preconditioner): dict(depths, forces, dofs, time_s)."""
+    preconditioner), with the further parameter overrides ("Section/Name=
+    value"), in the run folder named from prefix: dict(depths, forces,
+    dofs, time_s, stopped)."""
     n, h, q = mesh
     step = depths[0]
     assert all(abs(d - step * (k + 1)) < 1e-12 for k, d in enumerate(depths))
-    name = (f"ogrid_{'bonded' if bonded else 'frictionless'}_n{n}_h{h}_q{q}"
-            f"_d{depths[-1]}_s{len(depths)}")
-    args = [ssc, PRM, "-s", f"Run/Output directory={workdir}",
-            "-s", f"Run/Name={name}", "-s", "Run/Write fields=false",
-            "-s", f"Mesh/O-grid/Cells around={n}",
-            "-s", f"Mesh/O-grid/Edge cell size={h}",
-            "-s", f"Mesh/O-grid/Radial grading={q}",
-            "-s", f"Punch/Depth={depths[-1]}",
-            "-s", f"Punch/Load steps={len(depths)}",
-            "-s", f"Punch/Contact={'bonded' if bonded else 'frictionless'}"]
+    name = (f"{prefix}_{'bonded' if bonded else 'frictionless'}_n{n}_h{h}"
+            f"_q{q}_d{depths[-1]}_s{len(depths)}")
+    settings = [f"Run/Output directory={workdir}", f"Run/Name={name}",
+                "Run/Write fields=false",
+                f"Mesh/O-grid/Cells around={n}",
+                f"Mesh/O-grid/Edge cell size={h}",
+                f"Mesh/O-grid/Radial grading={q}",
+                f"Punch/Depth={depths[-1]}",
+                f"Punch/Load steps={len(depths)}",
+                f"Punch/Contact={'bonded' if bonded else 'frictionless'}"]
+    args = [ssc, PRM]
+    for setting in settings + list(overrides):
+        args += ["-s", setting]
     table = os.path.join(workdir, name, "force_displacement.csv")
     failed, wall = False, math.nan
     if not os.path.exists(table):  # else kept from an earlier run
@@ -245,26 +257,39 @@ def main():
             for d, f in zip(r["depths"], r["forces"]):
                 rows.append(dict(contact=contact, code=code, mesh=mesh,
                                  size=size, depth_mm=d, force_N=f))
-    with open(args.csv, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
-    # the finest mesh of each code that reached a depth, at every depth
+    write_rows(args.csv, rows)
     print("\ncontact       depth  ccx finest (change from previous)  "
           "ssc finest (change)  ssc - ccx")
     for contact in args.contacts:
-        for d in args.depths:
-            best = {}
-            for code in ("ccx", "ssc"):
-                at = [r["force_N"] for r in rows if r["contact"] == contact
-                      and r["code"] == code and abs(r["depth_mm"] - d) < 1e-9]
-                if at:
-                    change = (at[-1] / at[-2] - 1) if len(at) > 1 else math.nan
-                    best[code] = (at[-1], change)
-            if len(best) == 2:
-                (fc, cc), (fs, cs) = best["ccx"], best["ssc"]
-                print(f"{contact:12s} {d:5.2f}  {fc:.6f} ({cc:+.2%})  "
-                      f"{fs:.6f} ({cs:+.2%})  {fs / fc - 1:+.2%}")
+        print_finest([r for r in rows if r["contact"] == contact],
+                     args.depths, f"{contact:12s} ")
+
+
+def write_rows(path, rows):
+    """Writes the result rows (dicts with the same keys) as CSV."""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def print_finest(rows, depths, prefix=""):
+    """At every depth, the force of the finest mesh of each code (the last
+    row of that code there) with its change from the one before, and ssc's
+    difference from ccx."""
+    for d in depths:
+        best = {}
+        for code in ("ccx", "ssc"):
+            at = [r["force_N"] for r in rows
+                  if r["code"] == code and abs(r["depth_mm"] - d) < 1e-9]
+            if at:
+                change = (at[-1] / at[-2] - 1) if len(at) > 1 else math.nan
+                best[code] = (at[-1], change)
+        if len(best) == 2:
+            (fc, cc), (fs, cs) = best["ccx"], best["ssc"]
+            print(f"{prefix}{d:5.2f}  {fc:.6f} ({cc:+.2%})  "
+                  f"{fs:.6f} ({cs:+.2%})  {fs / fc - 1:+.2%}")
 
 
 def quick(ssc, workdir, depths=(0.25, 0.5), tolerance=0.01):

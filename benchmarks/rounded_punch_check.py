@@ -34,14 +34,11 @@ results/rounded_punch_check.csv):
 each code, 0.25 and 0.5 mm, exit status 1 if they differ by over 1 %.
 """
 import argparse
-import csv
 import math
 import os
 import re
 import shutil
-import subprocess
 import sys
-import time
 
 import numpy as np
 
@@ -181,20 +178,7 @@ def ccx_forces(h, depths, workdir):
     """Punch force (N) at each depth ccx reaches: tied nodes plus punch
     body (the contact), 180 times ccx's totals (the ring's force)."""
     text, cells = ccx_input(h, depths)
-    job = f"rounded_punch_h{h}"
-    inp, dat_file = (os.path.join(workdir, job + ext)
-                     for ext in (".inp", ".dat"))
-    wall = math.nan
-    if not (os.path.exists(dat_file) and os.path.exists(inp) and
-            open(inp).read() == text):  # else kept from an earlier run
-        start = time.perf_counter()
-        try:
-            cp.run_ccx(workdir, job, text)
-        except RuntimeError:  # no convergence: keep what was printed
-            pass
-        wall = time.perf_counter() - start
-    with open(dat_file) as f:
-        dat = f.read()
+    dat, out = axi.kept_ccx_run(workdir, f"rounded_punch_h{h}", text)
     times = [float(t) for t in re.findall(
         r"total force \(fx,fy,fz\) for set PUNCH and time\s+(\S+)", dat)]
     totals = cp.total_forces(dat)  # PUNCH, PBODY alternately
@@ -203,45 +187,20 @@ def ccx_forces(h, depths, workdir):
               for k in range(len(times))]
     contact = [-180 * totals[2 * k + 1][1] for k in range(len(times))]
     return dict(depths=[round(t * d_max, 6) for t in times], forces=forces,
-                contact=contact, cells=cells, time_s=wall)
+                contact=contact, cells=cells, time_s=out["time_s"])
 
 
 def ssc_forces(mesh, depths, workdir, ssc=axi.SSC):
-    """ssc's force at each depth (o-grid (cells around, edge size,
-    grading), mesh circle at TIE)."""
-    n, h, q = mesh
-    step = depths[0]
-    assert all(abs(d - step * (k + 1)) < 1e-12 for k, d in enumerate(depths))
-    name = f"rounded_n{n}_h{h}_q{q}_d{depths[-1]}_s{len(depths)}"
-    args = [ssc, axi.PRM, "-s", f"Run/Output directory={workdir}",
-            "-s", f"Run/Name={name}", "-s", "Run/Write fields=false",
-            "-s", f"Mesh/Fitted circle radius={TIE}",
-            "-s", f"Mesh/O-grid/Cells around={n}",
-            "-s", f"Mesh/O-grid/Edge cell size={h}",
-            "-s", f"Mesh/O-grid/Radial grading={q}",
-            "-s", "Punch/Edge contact=true",
-            "-s", f"Punch/Edge radius={RHO}",
-            "-s", "Punch/Tied region=flat face",
-            "-s", f"Punch/Contact penalty={PENALTY_FACTOR}",
-            "-s", f"Punch/Depth={depths[-1]}",
-            "-s", f"Punch/Load steps={len(depths)}"]
-    table = os.path.join(workdir, name, "force_displacement.csv")
-    wall = math.nan
-    if not os.path.exists(table):  # else kept from an earlier run
-        start = time.perf_counter()
-        try:
-            subprocess.run(args, capture_output=True,
-                           timeout=axi.SSC_TIMEOUT)
-        except subprocess.TimeoutExpired:
-            pass
-        wall = time.perf_counter() - start
-    reached, forces = [], []
-    if os.path.exists(table):
-        with open(table) as f:
-            for row in csv.DictReader(f):
-                reached.append(float(row["depth_mm"]))
-                forces.append(float(row["force_N"]))
-    return dict(depths=reached, forces=forces, time_s=wall)
+    """ssc's force at each depth on the o-grid (cells around, edge size,
+    grading) with the mesh circle at TIE, the skin tied under the flat face
+    and in contact with the rounding."""
+    return axi.ssc_forces(
+        mesh, depths, workdir, True, ssc,
+        overrides=[f"Mesh/Fitted circle radius={TIE}",
+                   "Punch/Edge contact=true", f"Punch/Edge radius={RHO}",
+                   "Punch/Tied region=flat face",
+                   f"Punch/Contact penalty={PENALTY_FACTOR}"],
+        prefix="rounded")
 
 
 def main():
@@ -280,24 +239,9 @@ def main():
         for d, f in zip(s["depths"], s["forces"]):
             rows.append(dict(code="ssc", mesh=f"Q2-P1 o-grid {spec}",
                              depth_mm=d, force_N=f, contact_force_N=""))
-    os.makedirs(os.path.dirname(args.csv), exist_ok=True)
-    with open(args.csv, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
+    axi.write_rows(args.csv, rows)
     print("\ndepth  ccx finest (change)  ssc finest (change)  ssc - ccx")
-    for d in args.depths:
-        best = {}
-        for code in ("ccx", "ssc"):
-            at = [r["force_N"] for r in rows if r["code"] == code and
-                  abs(r["depth_mm"] - d) < 1e-9]
-            if at:
-                change = at[-1] / at[-2] - 1 if len(at) > 1 else math.nan
-                best[code] = (at[-1], change)
-        if len(best) == 2:
-            (fc, cc), (fs, cs) = best["ccx"], best["ssc"]
-            print(f"{d:5.2f}  {fc:.6f} ({cc:+.2%})  {fs:.6f} ({cs:+.2%})  "
-                  f"{fs / fc - 1:+.2%}")
+    axi.print_finest(rows, args.depths)
 
 
 def quick(ssc, workdir, depths=(0.25, 0.5), tolerance=0.01):
