@@ -18,9 +18,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
-
+#include "indentation_run.h"
 #include "tests.h"
 
 int
@@ -29,14 +27,10 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
   const auto run = [](const std::vector<std::string> &extra) {
-    ssc::Parameters          parameters;
-    std::vector<std::string> overrides = {"Punch/Contact=frictionless",
-                                          "Punch/Edge contact=true",
-                                          "Punch/Profile length=0",
-                                          "Punch/Section=false"};
-    overrides.insert(overrides.end(), extra.begin(), extra.end());
-    parameters.read(SOURCE_DIR "/indentation_neo_hookean.prm", overrides);
-    return ssc::IndentationScene(parameters, MPI_COMM_WORLD).run();
+    return run_indentation("indentation_neo_hookean.prm",
+                           {"Punch/Contact=frictionless",
+                            "Punch/Edge contact=true"},
+                           extra);
   };
   const auto by_force = run({"Punch/Control=force",
                              "Punch/Forces=0.35, 0.5",

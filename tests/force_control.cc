@@ -9,9 +9,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
-
+#include "indentation_run.h"
 #include "tests.h"
 
 int
@@ -22,13 +20,9 @@ main(int argc, char **argv)
   for (const std::string contact : {"bonded", "frictionless"})
     {
       const auto run = [&](const std::vector<std::string> &extra) {
-        ssc::Parameters          parameters;
-        std::vector<std::string> overrides = {"Punch/Contact=" + contact,
-                                              "Punch/Profile length=0",
-                                              "Punch/Section=false"};
-        overrides.insert(overrides.end(), extra.begin(), extra.end());
-        parameters.read(SOURCE_DIR "/data/septa_block.prm", overrides);
-        return ssc::IndentationScene(parameters, MPI_COMM_WORLD).run();
+        return run_indentation("data/septa_block.prm",
+                               {"Punch/Contact=" + contact},
+                               extra);
       };
       const auto         by_force = run({"Punch/Control=force",
                                          "Punch/Forces=0.02, 0.05",

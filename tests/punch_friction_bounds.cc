@@ -9,9 +9,7 @@
 #include <cmath>
 #include <iomanip>
 
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
-
+#include "indentation_run.h"
 #include "tests.h"
 
 int
@@ -20,14 +18,9 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
   const auto depth = [](const std::vector<std::string> &extra) {
-    ssc::Parameters          parameters;
-    std::vector<std::string> overrides = {"Punch/Forces=0.2",
-                                          "Punch/Profile length=0",
-                                          "Punch/Section=false"};
-    overrides.insert(overrides.end(), extra.begin(), extra.end());
-    parameters.read(SOURCE_DIR "/indentation_neo_hookean.prm", overrides);
-    return ssc::IndentationScene(parameters, MPI_COMM_WORLD)
-      .run()
+    return run_indentation("indentation_neo_hookean.prm",
+                           {"Punch/Forces=0.2"},
+                           extra)
       .depths.back();
   };
   const double bonded = depth({"Punch/Contact=bonded", "Run/Name=bonded"});

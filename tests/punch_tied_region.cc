@@ -17,9 +17,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include <ssc/parameters.h>
-#include <ssc/scenes/indentation_scene.h>
-
+#include "indentation_run.h"
 #include "tests.h"
 
 int
@@ -28,15 +26,11 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
   const auto run = [](const std::vector<std::string> &extra) {
-    ssc::Parameters          parameters;
-    std::vector<std::string> overrides = {"Punch/Edge contact=true",
-                                          "Punch/Edge radius=1.5",
-                                          "Punch/Profile length=0",
-                                          "Punch/Section=false"};
-    overrides.insert(overrides.end(), extra.begin(), extra.end());
-    parameters.read(SOURCE_DIR "/indentation_neo_hookean.prm", overrides);
-    return ssc::IndentationScene(parameters, MPI_COMM_WORLD).run();
+    return run_indentation("indentation_neo_hookean.prm",
+                           {"Punch/Edge contact=true", "Punch/Edge radius=1.5"},
+                           extra);
   };
+
   const auto whole = run({"Punch/Forces=0.2", "Run/Name=tied_whole_face"});
   const auto flat  = run({"Punch/Forces=0.2",
                           "Punch/Tied region=flat face",
