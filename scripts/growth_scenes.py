@@ -34,7 +34,8 @@ FIGURES = {
         ("buttock_cellulite_fasciotomy", "after fasciotomy (r = 10 mm)")],
 }
 FIELDS = ["scene", "added_volume_mm3", "volume_change_mm3", "growth_ratio",
-          "max_elevation_mm", "mean_elevation_mm", "roughness_mm", "dimples",
+          "max_elevation_mm", "mean_elevation_mm", "roughness_mm", "Sa_mm",
+          "Svm_mm", "Sz_mm", "dimples",
           "mean_dimple_depth_mm", "max_dimple_depth_mm", "dofs",
           "newton_iterations", "linear_iterations", "wall_time_s"]
 
@@ -67,6 +68,9 @@ def row(scene):
                 max_elevation_mm=f"{s['max_elevation_mm']:.4f}",
                 mean_elevation_mm=f"{s['mean_elevation_mm']:.4f}",
                 roughness_mm=f"{s['roughness_mm']:.4f}",
+                Sa_mm=f"{s['surface']['Sa_mm']:.4f}",
+                Svm_mm=f"{s['surface']['Svm_mm']:.4f}",
+                Sz_mm=f"{s['surface']['Sz_mm']:.4f}",
                 dimples=s["dimples"]["count"],
                 mean_dimple_depth_mm=f"{s['dimples']['mean_depth_mm']:.4f}",
                 max_dimple_depth_mm=f"{s['dimples']['max_depth_mm']:.4f}",

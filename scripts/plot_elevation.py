@@ -43,6 +43,7 @@ def main():
                              squeeze=False, constrained_layout=True)
     for k, (title, (x, y, uz, residual, summary)) in enumerate(runs):
         extent = [x[0], x[-1], y[0], y[-1]]
+        surface = summary["surface"]
         image = axes[0, k].imshow(uz, origin="lower", extent=extent,
                                   cmap="viridis", vmin=min(0, -top), vmax=top)
         axes[0, k].set_title(
@@ -52,8 +53,9 @@ def main():
                                          extent=extent, cmap="RdBu_r",
                                          vmin=-detail, vmax=detail)
         axes[1, k].set_title(
-            f"roughness {summary['roughness_mm']:.3g} mm, "
-            f"{summary['dimples']['count']} dimples", fontsize=9)
+            f"Sa {surface['Sa_mm']:.3g}, Sq {surface['Sq_mm']:.3g}, "
+            f"Svm {surface['Svm_mm']:.3g}, Sz {surface['Sz_mm']:.3g} mm, "
+            f"{surface['dimples']['count']} dimples", fontsize=9)
         for row in range(2):
             axes[row, k].set_xlabel("x (mm)")
             axes[row, k].set_ylabel("y (mm)")

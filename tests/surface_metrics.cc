@@ -5,7 +5,9 @@
 //   roughness is the relief's RMS A/2, the mean and max elevation are c and
 //   c + A, the uplift volume is c times the area, and the dimples are the
 //   relief's minima (-A where one cosine is 1 and the other -1) inside the
-//   grid, counted exactly;
+//   grid, counted exactly; Sa, Sp, Sv, Sz and Svm (ISO 25178 and the
+//   profile mean of the clinical scans) are those of the relief sampled on
+//   the grid;
 // - the same relief on a tilted plane, measured in a central window: the
 //   plane belongs to the trend (the roughness stays A/2, the mean c), and
 //   the dimples are the minima in the window, edges included (84 of the
@@ -73,6 +75,35 @@ main(int argc, char **argv)
   deallog << "relief: " << relief.dimples.size() << " dimples (expected "
           << minima << "), depths " << shallowest << " to " << deepest << " (A "
           << A << ")" << std::endl;
+
+  // ISO 25178 parameters of the relief, against those of the relief
+  // itself sampled on the grid (the trend being c): Sa the mean of
+  // A |cos kx cos ky| ((2/pi)^2 A = 0.405 A in the continuum, 0.364 A on
+  // the 0.25 mm samples), Sp = Sv = A at the integer points, Sz = 2 A; Svm
+  // the mean over the x-profiles y = y_j of their deepest valley
+  // A |cos k y_j|
+  double sample_Sa = 0, sample_Svm = 0;
+  for (unsigned int j = 0; j < n; ++j)
+    {
+      double pit = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double r = grid.values[j * n + i] - c;
+          sample_Sa += std::abs(r) / (n * n);
+          pit = std::min(pit, r);
+        }
+      sample_Svm -= pit / n;
+    }
+  deallog << "relief: Sa / sampled " << relief.Sa / sample_Sa
+          << ", sampled Sa / continuum (2/pi)^2 A "
+          << sample_Sa / (4 / M_PI / M_PI * A) << std::endl;
+  deallog << "relief: Sp / A " << relief.Sp / A << ", Sv / A " << relief.Sv / A
+          << ", Sz / 2A "
+          << relief.surface_json()["Sz_mm"].get<double>() / (2 * A)
+          << ", Svm / sampled " << relief.Svm / sample_Svm << ", Spm / Svm "
+          << relief.Spm / relief.Svm << ", Sq / (A/2) "
+          << relief.surface_json()["Sq_mm"].get<double>() / (A / 2)
+          << std::endl;
 
   // the same relief on a tilted surface, measured in the central window
   // |x|, |y| <= 6 mm: the plane is part of the trend, the relief is not

@@ -47,7 +47,9 @@ namespace ssc
                       added_volume,
                       "Stress-free volume the growth adds, mm^3 (1 cm^3 = "
                       "1000 mm^3): the growth ratio g of the selected "
-                      "material is this divided by its volume.",
+                      "material is this divided by its volume (each "
+                      "lobule's weighted by its Lobule growth spread "
+                      "draw).",
                       Patterns::Double(0));
     prm.add_parameter("Load steps",
                       load_steps,
@@ -79,6 +81,25 @@ namespace ssc
                       "(mm) around the patch centre, away from the "
                       "supported sides; 0: the whole patch.",
                       Patterns::Double(0));
+    prm.add_parameter(
+      "Lobule growth spread",
+      lobule_growth_spread,
+      "Heterogeneous growth: each growing lobule grows by w times the "
+      "common growth ratio, w drawn from a lognormal distribution of mean 1 "
+      "whose ln w has this standard deviation (0: all lobules alike; adipocyte "
+      "volumes in one depot spread by about 0.5-0.8 in ln, see the region "
+      "files). The added volume stays the one asked for.",
+      Patterns::Double(0, 3));
+    prm.add_parameter("Growing lobule fraction",
+                      growing_lobule_fraction,
+                      "Each lobule of the region grows with this probability "
+                      "(1: all of them); the others keep their volume.",
+                      Patterns::Double(0, 1));
+    prm.add_parameter("Random seed",
+                      growth_seed,
+                      "Seed of the draws of the lobules' growth (the "
+                      "lobules' own seed is Microstructure/Random seed).",
+                      Patterns::Integer(0));
     prm.leave_subsection();
   }
 
@@ -90,6 +111,9 @@ namespace ssc
     AssertThrow(shape == GrowthRegionShape::patch ||
                   (semi_axes[0] > 0 && semi_axes[1] > 0 && semi_axes[2] > 0),
                 ExcMessage("Growth/Semi-axes must be positive (mm)."));
+    AssertThrow(growing_lobule_fraction > 0,
+                ExcMessage("Growth/Growing lobule fraction must be above 0 "
+                           "(some lobule has to grow)."));
     AssertThrow(trend_width > 0 && grid_spacing > 0,
                 ExcMessage("Growth/Trend filter width and Grid spacing must "
                            "be positive (mm)."));

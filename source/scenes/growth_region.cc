@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
-#include <algorithm>
+#include <cmath>
+#include <random>
 
 #include <ssc/scenes/growth_region.h>
 
@@ -18,13 +19,26 @@ namespace ssc
       layer_selected[layers.index_of(name, "Growth/Layers")] = true;
     if (microstructure == nullptr)
       return;
+    std::mt19937                     generator(parameters.growth_seed);
+    std::uniform_real_distribution<> uniform(0., 1.);
+    std::normal_distribution<>       normal(0., 1.);
+    const double                     spread = parameters.lobule_growth_spread;
     for (const LayerLobules &lobules : microstructure->lobule_layers())
       if (layer_selected[lobules.layer])
         {
           LayerSelection &selection = selections[lobules.layer];
           selection.locator = std::make_unique<LobuleLocator>(layers, lobules);
           for (const Lobule &lobule : lobules.lobules)
-            selection.grows.push_back(parameters.contains(lobule.centroid));
+            {
+              // both draws for every lobule, so that the fraction and the
+              // spread do not reshuffle each other's draws
+              const bool grows =
+                uniform(generator) < parameters.growing_lobule_fraction;
+              const double w =
+                std::exp(spread * normal(generator) - spread * spread / 2);
+              selection.weight.push_back(
+                grows && parameters.contains(lobule.centroid) ? w : 0.);
+            }
         }
   }
 
@@ -39,18 +53,20 @@ namespace ssc
       {
         const unsigned int lobule = selection.locator->lobule_at(p);
         if (lobule != numbers::invalid_unsigned_int)
-          return selection.grows[lobule] ? 1. : 0.;
+          return selection.weight[lobule];
       }
     return parameters.contains(p) ? 1. : 0.;
   }
 
 
-  unsigned int
-  GrowthRegion::n_selected_lobules() const
+  std::vector<double>
+  GrowthRegion::lobule_weights() const
   {
-    unsigned int n = 0;
+    std::vector<double> weights;
     for (const LayerSelection &selection : selections)
-      n += std::count(selection.grows.begin(), selection.grows.end(), true);
-    return n;
+      for (const double w : selection.weight)
+        if (w > 0)
+          weights.push_back(w);
+    return weights;
   }
 } // namespace ssc

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -69,7 +70,8 @@ namespace ssc
     ConditionalOStream     &pcout    = scene.pcout();
     TimerOutput            &timer    = scene.timer();
 
-    GrowthResult result;
+    GrowthResult        result;
+    std::vector<double> lobule_weights;
     {
       TimerOutput::Scope t(timer, "setup");
       system.setup(support_conditions(parameters.elasticity.sides));
@@ -81,17 +83,24 @@ namespace ssc
                                        const unsigned int layer) {
                                return region(p, layer);
                              });
+      lobule_weights         = region.lobule_weights();
       result.selected_volume = system.growth().volume(system.field());
       AssertThrow(result.selected_volume > 0,
                   ExcMessage("Growth: no material grows (no lobule of "
                              "Growth/Layers has its centroid in the region, "
                              "and no point of those layers lies in it)."));
       result.growth_ratio = growth.added_volume / result.selected_volume;
-      pcout << "Growth: " << region.n_selected_lobules() << " lobules, "
+      pcout << "Growth: " << lobule_weights.size() << " lobules, "
             << std::setprecision(6) << result.selected_volume
             << " mm^3 of fat grow by g = " << result.growth_ratio
-            << " (added volume " << growth.added_volume << " mm^3)"
-            << std::endl;
+            << " (added volume " << growth.added_volume << " mm^3)";
+      if (growth.lobule_growth_spread > 0 && !lobule_weights.empty())
+        pcout << ", lobule weights "
+              << *std::min_element(lobule_weights.begin(), lobule_weights.end())
+              << " to "
+              << *std::max_element(lobule_weights.begin(),
+                                   lobule_weights.end());
+      pcout << std::endl;
     }
 
     const PointLocator    locator(model.mesh().triangulation(),
@@ -140,8 +149,8 @@ namespace ssc
             << ": added " << std::setprecision(6) << result.added_volumes.back()
             << " mm^3 (the body's volume " << result.volume_changes.back()
             << " mm^3), elevation max " << m.max_elevation << " mean "
-            << m.mean_elevation << " mm, roughness " << m.roughness
-            << " mm, dimples " << m.dimples.size();
+            << m.mean_elevation << " mm, Sa " << m.Sa << " Sq " << m.roughness
+            << " Svm " << m.Svm << " mm, dimples " << m.dimples.size();
       if (!driver.linear() && !run.test_mode)
         pcout << " (" << statistics.newton_iterations << " Newton, "
               << statistics.linear_iterations << " CG iterations, "
@@ -169,7 +178,8 @@ namespace ssc
       std::ostringstream csv;
       csv << "step,added_volume_mm3,volume_change_mm3,max_elevation_mm,"
              "mean_elevation_mm,"
-             "roughness_mm,dimples,max_dimple_depth_mm,uplift_volume_mm3,"
+             "roughness_mm,Sa_mm,Sz_mm,Svm_mm,dimples,max_dimple_depth_mm,"
+             "uplift_volume_mm3,"
              "newton_iterations,linear_iterations,load_cuts,wall_time_s\n"
           << std::setprecision(10);
       for (unsigned int k = 0; k < result.metrics.size(); ++k)
@@ -179,7 +189,9 @@ namespace ssc
               << result.volume_changes[k] << ','
               << result.metrics[k].max_elevation << ','
               << result.metrics[k].mean_elevation << ','
-              << result.metrics[k].roughness << ','
+              << result.metrics[k].roughness << ',' << result.metrics[k].Sa
+              << ',' << result.metrics[k].Sp + result.metrics[k].Sv << ','
+              << result.metrics[k].Svm << ','
               << result.metrics[k].dimples.size() << ','
               << json["dimples"]["max_depth_mm"].get<double>() << ','
               << result.metrics[k].uplift_volume << ','
@@ -202,28 +214,34 @@ namespace ssc
     summary["mean_elevation_mm"] = last.mean_elevation;
     summary["roughness_mm"]      = last.roughness;
     summary["dimples"]           = last.to_json()["dimples"];
+    summary["surface"]           = last.surface_json();
     summary["uplift_volume_mm3"] = last.uplift_volume;
     summary["volume_change_mm3"] = result.volume_changes.back();
-    summary["growth"]            = {{"layers", growth.layers},
-                                    {"region", to_string(growth.shape)},
-                                    {"grown_volume_mm3", result.selected_volume},
-                                    {"growth_ratio", result.growth_ratio},
-                                    {"stress_free_added_volume_mm3",
-                                     result.growth_ratio * result.selected_volume},
-                                    {"skin_modulus_factor",
-                                     parameters.layers.get_skin_modulus_factor()},
-                                    {"trend_filter_width_mm", growth.trend_width},
-                                    {"metrics_grid",
-                                     {{"nx", last.last_x - last.first_x + 1},
-                                      {"ny", last.last_y - last.first_y + 1},
-                                      {"spacing_mm", elevation.x[1] - elevation.x[0]},
-                                      {"half_width_mm", growth.metrics_half_width}}}};
+    summary["growth"]            = {
+                 {"layers", growth.layers},
+                 {"region", to_string(growth.shape)},
+                 {"grown_volume_mm3", result.selected_volume},
+                 {"growth_ratio", result.growth_ratio},
+                 {"growing_lobules", lobule_weights.size()},
+                 {"lobule_growth_spread", growth.lobule_growth_spread},
+                 {"growing_lobule_fraction", growth.growing_lobule_fraction},
+                 {"lobule_weights", lobule_weights},
+                 {"stress_free_added_volume_mm3",
+                  result.growth_ratio * result.selected_volume},
+                 {"skin_modulus_factor", parameters.layers.get_skin_modulus_factor()},
+                 {"trend_filter_width_mm", growth.trend_width},
+                 {"metrics_grid",
+                  {{"nx", last.last_x - last.first_x + 1},
+                   {"ny", last.last_y - last.first_y + 1},
+                   {"spacing_mm", elevation.x[1] - elevation.x[0]},
+                   {"half_width_mm", growth.metrics_half_width}}}};
     nlohmann::ordered_json steps = nlohmann::ordered_json::array();
     for (unsigned int k = 0; k < result.metrics.size(); ++k)
       {
         auto entry                 = result.metrics[k].to_json();
         entry["added_volume_mm3"]  = result.added_volumes[k];
         entry["volume_change_mm3"] = result.volume_changes[k];
+        entry["surface"]           = result.metrics[k].surface_json();
         steps.push_back(entry);
       }
     summary["steps"] = steps;

@@ -139,24 +139,42 @@ namespace ssc
       window_indices(elevation.y, half_width);
 
     metrics.max_elevation = -std::numeric_limits<double>::max();
-    double       sum = 0, square = 0, volume = 0;
+    metrics.Sp            = -std::numeric_limits<double>::max();
+    metrics.Sv            = -std::numeric_limits<double>::max();
+    double       sum = 0, square = 0, absolute = 0, volume = 0;
     unsigned int count = 0;
     for (unsigned int j = metrics.first_y; j <= metrics.last_y; ++j)
-      for (unsigned int i = metrics.first_x; i <= metrics.last_x; ++i)
-        {
-          const double u        = elevation(i, j);
-          const double r        = u - metrics.trend(i, j);
-          metrics.max_elevation = std::max(metrics.max_elevation, u);
-          sum += u;
-          square += r * r;
-          ++count;
-          // trapezoidal weights on the window
-          volume += u * hx * hy *
-                    ((i == metrics.first_x || i == metrics.last_x) ? 0.5 : 1.) *
-                    ((j == metrics.first_y || j == metrics.last_y) ? 0.5 : 1.);
-        }
+      {
+        double profile_peak = -std::numeric_limits<double>::max();
+        double profile_pit  = std::numeric_limits<double>::max();
+        for (unsigned int i = metrics.first_x; i <= metrics.last_x; ++i)
+          {
+            const double u        = elevation(i, j);
+            const double r        = u - metrics.trend(i, j);
+            metrics.max_elevation = std::max(metrics.max_elevation, u);
+            profile_peak          = std::max(profile_peak, r);
+            profile_pit           = std::min(profile_pit, r);
+            sum += u;
+            square += r * r;
+            absolute += std::abs(r);
+            ++count;
+            // trapezoidal weights on the window
+            volume +=
+              u * hx * hy *
+              ((i == metrics.first_x || i == metrics.last_x) ? 0.5 : 1.) *
+              ((j == metrics.first_y || j == metrics.last_y) ? 0.5 : 1.);
+          }
+        metrics.Sp = std::max(metrics.Sp, profile_peak);
+        metrics.Sv = std::max(metrics.Sv, -profile_pit);
+        metrics.Spm += profile_peak;
+        metrics.Svm -= profile_pit;
+      }
+    const unsigned int n_profiles = metrics.last_y - metrics.first_y + 1;
+    metrics.Spm /= n_profiles;
+    metrics.Svm /= n_profiles;
     metrics.mean_elevation = sum / count;
     metrics.roughness      = std::sqrt(square / count);
+    metrics.Sa             = absolute / count;
     metrics.uplift_volume  = volume;
 
     // A dimple is a depression of the skin itself: a local minimum of the
@@ -190,22 +208,46 @@ namespace ssc
   }
 
 
+  namespace
+  {
+    /// Count, mean and largest depth of @p dimples.
+    nlohmann::ordered_json
+    dimples_json(const std::vector<Dimple> &dimples)
+    {
+      double mean_depth = 0, max_depth = 0;
+      for (const Dimple &d : dimples)
+        {
+          mean_depth += d.depth / dimples.size();
+          max_depth = std::max(max_depth, d.depth);
+        }
+      return {{"count", dimples.size()},
+              {"mean_depth_mm", mean_depth},
+              {"max_depth_mm", max_depth}};
+    }
+  } // namespace
+
+
   nlohmann::ordered_json
   SurfaceMetrics::to_json() const
   {
-    double mean_depth = 0, max_depth = 0;
-    for (const Dimple &d : dimples)
-      {
-        mean_depth += d.depth / dimples.size();
-        max_depth = std::max(max_depth, d.depth);
-      }
     return {{"max_elevation_mm", max_elevation},
             {"mean_elevation_mm", mean_elevation},
             {"roughness_mm", roughness},
-            {"dimples",
-             {{"count", dimples.size()},
-              {"mean_depth_mm", mean_depth},
-              {"max_depth_mm", max_depth}}},
+            {"dimples", dimples_json(dimples)},
             {"uplift_volume_mm3", uplift_volume}};
+  }
+
+
+  nlohmann::ordered_json
+  SurfaceMetrics::surface_json() const
+  {
+    return {{"Sa_mm", Sa},
+            {"Sq_mm", roughness},
+            {"Sp_mm", Sp},
+            {"Sv_mm", Sv},
+            {"Sz_mm", Sp + Sv},
+            {"Spm_mm", Spm},
+            {"Svm_mm", Svm},
+            {"dimples", dimples_json(dimples)}};
   }
 } // namespace ssc

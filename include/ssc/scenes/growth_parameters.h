@@ -46,6 +46,13 @@ namespace ssc
     double                   grid_spacing       = 0.5;
     double                   dimple_depth       = 0.01;
     double                   metrics_half_width = 0;
+    /// Lognormal spread (standard deviation of ln w) of the lobules' growth
+    /// weights w, mean 1: lobules differ (hypertrophy is uneven).
+    double lobule_growth_spread = 0;
+    /// Probability that a lobule of the region grows at all.
+    double growing_lobule_fraction = 1;
+    /// Seed of the draws of the lobules' weights.
+    unsigned int growth_seed = 1;
 
     /// Whether @p p lies in the region (always, for the whole patch).
     bool

@@ -14,10 +14,12 @@
 namespace ssc
 {
   /**
-   * Which material grows: that of the selected layers, lobule by lobule
-   * where the layer carries lobules (a lobule grows whole when its
+   * Which material grows, and how much: that of the selected layers, lobule
+   * by lobule where the layer carries lobules (a lobule grows whole when its
    * centroid lies in the region, so an injection fills whole fat
-   * compartments), point by point elsewhere.
+   * compartments), point by point elsewhere. A lobule's weight is drawn
+   * once (Growing lobule fraction, Lobule growth spread: lognormal of mean
+   * 1), in the lobules' order, so every rank draws the same.
    */
   class GrowthRegion
   {
@@ -27,21 +29,23 @@ namespace ssc
                  const GrowthParameters &parameters,
                  const Microstructure   *microstructure);
 
-    /// 1 where the material at reference point @p p of layer @p layer
-    /// grows, 0 elsewhere.
+    /// The growth weight of the material at reference point @p p of layer
+    /// @p layer: its lobule's weight, 1 in the region outside lobules, 0
+    /// elsewhere.
     double
     operator()(const Point<3> &p, const unsigned int layer) const;
 
-    /// Number of lobules that grow.
-    unsigned int
-    n_selected_lobules() const;
+    /// The weights of the lobules that grow, all layers.
+    std::vector<double>
+    lobule_weights() const;
 
   private:
-    /// The lobules of one selected layer and which of them grow.
+    /// The lobules of one selected layer and their growth weights (0: the
+    /// lobule does not grow).
     struct LayerSelection
     {
       std::unique_ptr<LobuleLocator> locator;
-      std::vector<bool>              grows;
+      std::vector<double>            weight;
     };
 
     const LayerStack           &layers;

@@ -39,13 +39,28 @@ namespace ssc
    * the root mean square of elevation minus trend; a dimple is a local
    * minimum of the elevation less the plane (lower than at the eight
    * neighbouring grid points) at least the dimple depth below the trend.
+   *
+   * The areal parameters of ISO 25178-2 are those of the residual r =
+   * elevation - trend over the window (the scale-limited surface; the
+   * trend is the L-filter, a Gaussian of cut-off wavelength about
+   * sigma / 0.187): Sa the mean of |r|, Sq its root mean square, Sp the
+   * highest peak, Sv the deepest valley, Sz = Sp + Sv. Clinical scans of
+   * cellulite (Smalls et al., J Cosmet Sci 56:105, 2005, TrueMap) also
+   * report the profile means Spm and Svm: the highest peak and the deepest
+   * valley of each profile (grid line along x), averaged over the profiles;
+   * their Sz is Spm + Svm and their St is ISO's Sz.
    */
   struct SurfaceMetrics
   {
     double              max_elevation  = 0; ///< mm
     double              mean_elevation = 0; ///< mm
-    double              roughness      = 0; ///< mm
-    double              uplift_volume  = 0; ///< integral of u_z, mm^3
+    double              roughness      = 0; ///< mm, Sq
+    double              Sa             = 0; ///< mean |r|, mm
+    double              Sp             = 0; ///< highest peak of r, mm
+    double              Sv             = 0; ///< deepest valley of r, mm
+    double              Spm = 0; ///< mean of the profiles' highest peaks, mm
+    double              Svm = 0; ///< mean of the profiles' deepest valleys, mm
+    double              uplift_volume = 0; ///< integral of u_z, mm^3
     std::vector<Dimple> dimples;
     GridField           trend;
     /// The grid indices of the window, both ends included.
@@ -64,6 +79,12 @@ namespace ssc
     /// depth) and the uplift volume.
     nlohmann::ordered_json
     to_json() const;
+
+    /// The summary.json entry `surface` of DESIGN.md §3: Sa_mm, Sq_mm,
+    /// Sp_mm, Sv_mm, Sz_mm (ISO 25178, Sp + Sv), Spm_mm, Svm_mm and the
+    /// dimples.
+    nlohmann::ordered_json
+    surface_json() const;
   };
 } // namespace ssc
 
