@@ -58,6 +58,64 @@ namespace ssc
       return parameters.region.realisation_half_width > 0 ||
              parameters.region.contains(x, y);
     }
+
+
+    /// Tilts each ligament of @p ligaments about its top by an angle from
+    /// the vertical drawn from the normal distribution of the parameters
+    /// (cut to [0, 75] degrees) and a uniform azimuth, and moves its bottom
+    /// to where the tilted line meets the interface @p bottom (a fixed
+    /// point iteration on the interface's depth, which converges for
+    /// interface slopes below the cotangent of the angle). A line that
+    /// would leave @p rectangle is tilted the other way. Draws from a
+    /// generator of its own, so that the positions do not depend on the
+    /// inclination.
+    void
+    incline(std::vector<Ligament>          &ligaments,
+            const LayerStack               &layers,
+            const unsigned int              bottom,
+            const BoundingBox<2>           &rectangle,
+            const MicrostructureParameters &parameters)
+    {
+      const double mean   = parameters.ligament_inclination * M_PI / 180;
+      const double spread = parameters.ligament_inclination_spread * M_PI / 180;
+      if (mean == 0 && spread == 0)
+        return;
+      std::seed_seq                    seed_sequence{parameters.seed, 2000003u};
+      std::mt19937                     generator(seed_sequence);
+      std::normal_distribution<double> normal(mean, spread);
+      std::uniform_real_distribution<double> uniform(0., 2 * M_PI);
+      for (Ligament &ligament : ligaments)
+        {
+          double angle = normal(generator);
+          while (angle < 0 || angle > 75 * M_PI / 180)
+            angle = normal(generator);
+          const double   azimuth = uniform(generator);
+          const Point<3> top     = ligament.top;
+          for (const double side : {1., -1.})
+            {
+              const Tensor<1, 2> direction(
+                {side * std::cos(azimuth), side * std::sin(azimuth)});
+              Point<2> end(top[0], top[1]);
+              double   depth = -ligament.bottom[2];
+              for (unsigned int k = 0; k < 50; ++k)
+                {
+                  end = Point<2>(top[0], top[1]) +
+                        (depth + top[2]) * std::tan(angle) * direction;
+                  const double next =
+                    layers.depth_of_interface(bottom, end[0], end[1]);
+                  const bool converged = std::abs(next - depth) < 1e-10;
+                  depth                = next;
+                  if (converged)
+                    break;
+                }
+              if (rectangle.point_inside(end) || side < 0)
+                {
+                  ligament.bottom = Point<3>(end[0], end[1], -depth);
+                  break;
+                }
+            }
+        }
+    }
   } // namespace
 
 
@@ -136,6 +194,7 @@ namespace ssc
           {Point<3>(x, y, -layers.depth_of_interface(top, x, y)),
            Point<3>(x, y, -layers.depth_of_interface(bottom, x, y))});
       }
+    incline(ligaments, layers, bottom, rectangle, parameters);
     // drawn in the whole rectangle: the region cuts the realisation
     const auto outside = [&](const Ligament &ligament) {
       return !parameters.region.contains(ligament.top[0], ligament.top[1]);

@@ -13,7 +13,7 @@
 
 namespace ssc
 {
-  /// A skin ligament: a straight cable perpendicular to the skin.
+  /// A skin ligament: a straight cable from the skin to a deeper layer.
   struct Ligament
   {
     Point<3> top;    ///< on the bottom of the skin
@@ -46,9 +46,11 @@ namespace ssc
    * their positions are drawn from the
    * density by rejection sampling (std::mt19937 seeded with the seed), so a
    * density that varies over the patch (buttock, knee) puts more ligaments
-   * where it is higher. Each runs vertically from the bottom of the skin
-   * (the last skin layer from the top) to the top of the first SM layer
-   * below it or to the top of the first deep layer.
+   * where it is higher. Each runs from the bottom of the skin (the last
+   * skin layer from the top) to the top of the first SM layer below it or
+   * to the top of the first deep layer, vertically or at an angle drawn
+   * from the Inclination parameters (a line that would leave @p rectangle
+   * tilts the other way).
    */
   std::vector<Ligament>
   place_ligaments(const LayerStack               &layers,

@@ -67,7 +67,7 @@ namespace ssc
                           const double patch_length_y) const;
   };
 
-  /// Skin ligaments (retinacula cutis running perpendicular to the skin).
+  /// Where the skin ligaments (retinacula cutis) end.
   enum class LigamentTarget
   {
     SM,
@@ -107,15 +107,19 @@ namespace ssc
    */
   struct MicrostructureParameters
   {
-    bool                 lobules                 = false;
-    bool                 ligaments               = false;
-    unsigned int         seed                    = 1;
-    unsigned int         lloyd_iterations        = 30;
-    double               minimum_septum_area     = 1e-3;
-    double               septum_triangle_size    = 2;
-    std::string          ligament_density        = "1";
-    LigamentTarget       ligament_target         = LigamentTarget::SM;
-    double               ligament_segment_length = 0.5;
+    bool           lobules                 = false;
+    bool           ligaments               = false;
+    unsigned int   seed                    = 1;
+    unsigned int   lloyd_iterations        = 30;
+    double         minimum_septum_area     = 1e-3;
+    double         septum_triangle_size    = 2;
+    std::string    ligament_density        = "1";
+    LigamentTarget ligament_target         = LigamentTarget::SM;
+    double         ligament_segment_length = 0.5;
+    /// Mean and standard deviation (degrees) of the ligaments' angle from
+    /// the vertical; their azimuths are uniform.
+    double               ligament_inclination        = 0;
+    double               ligament_inclination_spread = 0;
     MicrostructureRegion region;
     Fasciotomy           fasciotomy;
 
