@@ -1,0 +1,231 @@
+#!/usr/bin/python3
+"""Sensitivity of the growth scenes' surface to the sourced parameters
+(issue 27): each parameter at the low and the high end of its literature
+range, the others at their central values, for
+
+- the cellulite scene (prm/buttock_cellulite.prm, 24 cm^3 of fat growth):
+  Sa and Svm of the skin surface (ISO 25178 of the residual after the
+  smooth trend; Svm as the clinical scans report it, Smalls et al. 2005:
+  Sa 1.1 mm (0.3-2.1), Svm 2.8 mm (1.0-7.1) for women's thighs);
+- the injection scenes (prm/cheek_injection_sat.prm and _dat.prm, 0.5 cm^3):
+  the ratio of the SAT injection's Sq to the DAT injection's (the
+  reference model shows orange peel after SAT and a smooth dome after DAT
+  injection: the ratio should be well above 1).
+
+    /usr/bin/python3 benchmarks/growth_sensitivity.py [--jobs 2]
+
+Runs every case once (one MPI rank each, --jobs at a time) and keeps its
+summary in benchmarks/results/growth_runs/<case>/summary.json (delete a
+folder to rerun); writes benchmarks/results/growth_sensitivity.csv and the
+tornado plot growth_sensitivity.png. Also runs the aged skin (Skin modulus
+factor 0.5) at the central values: aging should raise Sa.
+"""
+import argparse
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SSC = os.path.join(ROOT, "build", "bin", "ssc")
+OUT = os.path.join(ROOT, "benchmarks", "results")
+RUNS = os.path.join(OUT, "growth_runs")
+SCENES = {"buttock": "buttock_cellulite", "cheek_sat": "cheek_injection_sat",
+          "cheek_dat": "cheek_injection_dat"}
+LIG = "Embedded/Ligaments/"
+SEPTA = "Embedded/Septa/"
+
+
+def fat_nu(nu):
+    return {"Layer stack/SAT/Poisson's ratio": nu,
+            "Layer stack/DAT/Poisson's ratio": nu}
+
+
+# (key, label, source, low, central, high, overrides(value)); the central
+# values are those of the region files (prm/regions/buttock.prm, cheek.prm)
+PARAMETERS = [
+    ("tether_modulus", "tether modulus (MPa)",
+     "0.1 (Herlin 2014, assumed) to 23 (Scarpa's fascia, tensile)",
+     0.1, 1.5, 23, lambda v: {LIG + "Young's modulus": v}),
+    ("tether_diameter", "tether diameter (mm)",
+     "0.3 (Herlin 2014) to 2 (septa under depressions on MRI, Hexsel 2009)",
+     0.3, 1.0, 2.0, lambda v: {LIG + "Diameter": v}),
+    ("tether_density", "tether density (1/cm^2)", "estimate 1-8",
+     1, 4, 8, lambda v: {"Microstructure/Ligaments/Density": v}),
+    ("tether_angle", "tether angle from vertical (deg)",
+     "oblique in 84 % (Whipple 2021); angle an estimate 0-60",
+     0, 45, 60, lambda v: {"Microstructure/Ligaments/Inclination": v}),
+    ("septa_modulus", "septa modulus (MPa)",
+     "0.1 (Herlin 2014) to 23 (fascia)",
+     0.1, 1.5, 23, lambda v: {SEPTA + "Young's modulus": v}),
+    ("skin_modulus_factor", "skin modulus factor",
+     "0.5 (aged) to 5 (in vivo skin moduli tens to hundreds of kPa)",
+     0.5, 1, 5, lambda v: {"Layer stack/Skin modulus factor": v}),
+    ("growth_spread", "lobule growth spread (ln)", "estimate 0-0.6",
+     0, 0.3, 0.6, lambda v: {"Growth/Lobule growth spread": v}),
+    ("fat_nu", "fat Poisson's ratio", "0.49 (Herlin 2014) to 0.4999",
+     0.49, 0.499, 0.4999, fat_nu),
+]
+
+
+def central_overrides():
+    overrides = {}
+    for p in PARAMETERS:
+        overrides.update(p[6](p[4]))
+    return overrides
+
+
+def run_case(case, scene, overrides):
+    """Runs @p scene with @p overrides unless kept; returns its summary."""
+    kept = os.path.join(RUNS, case, "summary.json")
+    if not os.path.exists(kept):
+        work = tempfile.mkdtemp(prefix="growth_")
+        command = [SSC, os.path.join(ROOT, "prm", scene + ".prm"),
+                   "-s", f"Run/Output directory={work}",
+                   "-s", f"Run/Name={case}", "-s", "Run/Write fields=false"]
+        for key, value in overrides.items():
+            command += ["-s", f"{key}={value}"]
+        start = time.time()
+        result = subprocess.run(command, capture_output=True, text=True)
+        print(f"{case}: exit status {result.returncode} after "
+              f"{time.time() - start:.0f} s", flush=True)
+        if result.returncode != 0:
+            print(result.stdout[-1500:], result.stderr[-1500:],
+                  file=sys.stderr)
+            shutil.rmtree(work)
+            return None
+        os.makedirs(os.path.join(RUNS, case), exist_ok=True)
+        shutil.copy(os.path.join(work, case, "summary.json"), kept)
+        shutil.rmtree(work)
+    with open(kept) as f:
+        return json.load(f)
+
+
+def cases():
+    """(case, scene, overrides, parameter key, end) of the whole study."""
+    base = central_overrides()
+    out = []
+    for short, scene in SCENES.items():
+        out.append((f"{short}_central", scene, base, "central", "central"))
+        for key, _, _, low, _, high, overrides in PARAMETERS:
+            for end, value in (("low", low), ("high", high)):
+                out.append((f"{short}_{key}_{end}", scene,
+                            {**base, **overrides(value)}, key, end))
+    aged = {**base, "Layer stack/Skin modulus factor": 0.5}
+    out.append(("buttock_aged", SCENES["buttock"], aged, "aged", "aged"))
+    return out
+
+
+def metrics(summary):
+    s = summary["surface"]
+    return {"Sa_mm": s["Sa_mm"], "Sq_mm": s["Sq_mm"], "Svm_mm": s["Svm_mm"],
+            "Sz_mm": s["Sz_mm"], "dimples": s["dimples"]["count"],
+            "max_elevation_mm": summary["max_elevation_mm"],
+            "wall_s": summary["timings"]["total"]}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--jobs", type=int, default=2)
+    args = parser.parse_args()
+    todo = cases()
+    with ThreadPoolExecutor(args.jobs) as pool:
+        summaries = list(pool.map(lambda c: run_case(c[0], c[1], c[2]), todo))
+    rows = []
+    for (case, scene, _, key, end), summary in zip(todo, summaries):
+        if summary is None:
+            continue
+        value = next((p[3] if end == "low" else p[5] for p in PARAMETERS
+                      if p[0] == key), "")
+        rows.append({"case": case, "scene": scene, "parameter": key,
+                     "end": end, "value": value, **metrics(summary)})
+    with open(os.path.join(OUT, "growth_sensitivity.csv"), "w",
+              newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    report(rows)
+    plot(rows)
+
+
+def lookup(rows, case):
+    return next((r for r in rows if r["case"] == case), None)
+
+
+def ratio(rows, key_end):
+    sat = lookup(rows, "cheek_sat_" + key_end)
+    dat = lookup(rows, "cheek_dat_" + key_end)
+    return sat["Sq_mm"] / dat["Sq_mm"] if sat and dat else float("nan")
+
+
+def report(rows):
+    c = lookup(rows, "buttock_central")
+    print(f"cellulite, central: Sa {c['Sa_mm']:.3f} Svm {c['Svm_mm']:.3f} "
+          f"Sz {c['Sz_mm']:.3f} mm, {c['dimples']} dimples "
+          f"(measured Sa 1.1 (0.3-2.1), Svm 2.8 (1.0-7.1) mm)")
+    aged = lookup(rows, "buttock_aged")
+    if aged:
+        print(f"aged skin: Sa {aged['Sa_mm']:.3f} mm "
+              f"({aged['Sa_mm'] / c['Sa_mm'] - 1:+.0%})")
+    print(f"injection, central: SAT/DAT Sq ratio {ratio(rows, 'central'):.2f}")
+    print("| parameter | low | high | Sa low / high (mm) | Svm low / high "
+          "(mm) | SAT/DAT low / high |")
+    print("|---|---|---|---|---|---|")
+    for key, label, _, low, _, high, _ in PARAMETERS:
+        lo, hi = (lookup(rows, f"buttock_{key}_{e}") for e in ("low", "high"))
+        if not (lo and hi):
+            continue
+        print(f"| {label} | {low} | {high} | {lo['Sa_mm']:.3f} / "
+              f"{hi['Sa_mm']:.3f} | {lo['Svm_mm']:.3f} / {hi['Svm_mm']:.3f} "
+              f"| {ratio(rows, key + '_low'):.2f} / "
+              f"{ratio(rows, key + '_high'):.2f} |")
+
+
+def plot(rows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    panels = [("Sa (mm), cellulite", lambda e: lookup(
+                  rows, "buttock_" + e)["Sa_mm"]),
+              ("Svm (mm), cellulite", lambda e: lookup(
+                  rows, "buttock_" + e)["Svm_mm"]),
+              ("Sq SAT / Sq DAT, injection", lambda e: ratio(rows, e))]
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.8), constrained_layout=True)
+    for ax, (title, value) in zip(axes, panels):
+        centre = value("central")
+        spans = []
+        for key, label, _, low, _, high, _ in PARAMETERS:
+            try:
+                lo, hi = value(key + "_low"), value(key + "_high")
+            except TypeError:
+                continue
+            spans.append((abs(hi - lo), label, lo, hi, low, high))
+        spans.sort()
+        for k, (_, label, lo, hi, low, high) in enumerate(spans):
+            ax.barh(k, lo - centre, left=centre, color="tab:blue")
+            ax.barh(k, hi - centre, left=centre, color="tab:red")
+        ax.set_yticks(range(len(spans)))
+        ax.set_yticklabels([f"{s[1]}\n{s[4]} / {s[5]}" for s in spans],
+                           fontsize=7)
+        ax.axvline(centre, color="k", lw=0.8)
+        ax.set_xscale("log")
+        ax.set_title(f"{title}: central {centre:.3g}", fontsize=9)
+    axes[0].axvspan(0.3, 2.1, color="tab:green", alpha=0.15,
+                    label="measured range (Smalls 2005)")
+    axes[1].axvspan(1.0, 7.1, color="tab:green", alpha=0.15)
+    axes[2].axvline(2, color="tab:green", ls="--", label="ratio 2")
+    axes[0].legend(fontsize=7, loc="lower right")
+    fig.suptitle("Growth scenes: each parameter at the low (blue) and high "
+                 "(red) end of its range, the others central", fontsize=10)
+    path = os.path.join(OUT, "growth_sensitivity.png")
+    fig.savefig(path, dpi=110)
+    print("wrote", path)
+
+
+if __name__ == "__main__":
+    main()
