@@ -185,6 +185,13 @@ main(int argc, char **argv)
   check("growth centre with two coordinates",
         growth + "subsection Growth\n  set Layers = fat\n"
                  "  set Centre = 0, -2\nend\n");
+  check("growth where no lobule may grow",
+        growth + "subsection Growth\n  set Layers = fat\n"
+                 "  set Growing lobule fraction = 0\nend\n");
+  check("ligaments inclined beyond 75 degrees",
+        std::string(valid_stack) +
+          "subsection Microstructure\n  subsection Ligaments\n"
+          "    set Enabled = true\n    set Inclination = 80\n  end\nend\n");
   check("fasciotomy with nothing to cut",
         std::string(valid_stack) +
           "subsection Microstructure\n  subsection Fasciotomy\n"

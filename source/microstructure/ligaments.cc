@@ -66,7 +66,7 @@ namespace ssc
     /// to where the tilted line meets the interface @p bottom (a fixed
     /// point iteration on the interface's depth, which converges for
     /// interface slopes below the cotangent of the angle). A line that
-    /// would leave @p rectangle is tilted the other way. Draws from a
+    /// would leave @p rectangle draws its azimuth again. Draws from a
     /// generator of its own, so that the positions do not depend on the
     /// inclination.
     void
@@ -89,28 +89,34 @@ namespace ssc
           double angle = normal(generator);
           while (angle < 0 || angle > 75 * M_PI / 180)
             angle = normal(generator);
-          const double   azimuth = uniform(generator);
-          const Point<3> top     = ligament.top;
-          for (const double side : {1., -1.})
+          const Point<3> top = ligament.top;
+          // where the line at @p azimuth meets the interface
+          const auto end_at = [&](const double azimuth) {
+            const Tensor<1, 2> direction(
+              {std::cos(azimuth), std::sin(azimuth)});
+            Point<2> end(top[0], top[1]);
+            double   depth = -ligament.bottom[2];
+            for (unsigned int k = 0; k < 50; ++k)
+              {
+                end = Point<2>(top[0], top[1]) +
+                      (depth + top[2]) * std::tan(angle) * direction;
+                const double next =
+                  layers.depth_of_interface(bottom, end[0], end[1]);
+                const bool converged = std::abs(next - depth) < 1e-10;
+                depth                = next;
+                if (converged)
+                  break;
+              }
+            return Point<3>(end[0], end[1], -depth);
+          };
+          // near the rectangle's sides, azimuths are drawn again until the
+          // line stays inside (the ligament stays vertical if none does)
+          for (unsigned int attempt = 0; attempt < 64; ++attempt)
             {
-              const Tensor<1, 2> direction(
-                {side * std::cos(azimuth), side * std::sin(azimuth)});
-              Point<2> end(top[0], top[1]);
-              double   depth = -ligament.bottom[2];
-              for (unsigned int k = 0; k < 50; ++k)
+              const Point<3> end = end_at(uniform(generator));
+              if (rectangle.point_inside(Point<2>(end[0], end[1])))
                 {
-                  end = Point<2>(top[0], top[1]) +
-                        (depth + top[2]) * std::tan(angle) * direction;
-                  const double next =
-                    layers.depth_of_interface(bottom, end[0], end[1]);
-                  const bool converged = std::abs(next - depth) < 1e-10;
-                  depth                = next;
-                  if (converged)
-                    break;
-                }
-              if (rectangle.point_inside(end) || side < 0)
-                {
-                  ligament.bottom = Point<3>(end[0], end[1], -depth);
+                  ligament.bottom = end;
                   break;
                 }
             }

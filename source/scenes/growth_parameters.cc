@@ -85,10 +85,9 @@ namespace ssc
       "Lobule growth spread",
       lobule_growth_spread,
       "Heterogeneous growth: each growing lobule grows by w times the "
-      "common growth ratio, w drawn from a lognormal distribution of mean 1 "
-      "whose ln w has this standard deviation (0: all lobules alike; adipocyte "
-      "volumes in one depot spread by about 0.5-0.8 in ln, see the region "
-      "files). The added volume stays the one asked for.",
+      "common growth ratio, w drawn once per lobule from a lognormal "
+      "distribution of mean 1 whose ln w has this standard deviation (0: "
+      "all lobules alike). The added volume stays the one asked for.",
       Patterns::Double(0, 3));
     prm.add_parameter("Growing lobule fraction",
                       growing_lobule_fraction,
@@ -98,7 +97,7 @@ namespace ssc
     prm.add_parameter("Random seed",
                       growth_seed,
                       "Seed of the draws of the lobules' growth (the "
-                      "lobules' own seed is Microstructure/Random seed).",
+                      "lobules' own is Microstructure/Seed).",
                       Patterns::Integer(0));
     prm.leave_subsection();
   }
