@@ -50,7 +50,7 @@ namespace ssc
    * skin layer from the top) to the top of the first SM layer below it or
    * to the top of the first deep layer, vertically or at an angle drawn
    * from the Inclination parameters (a line that would leave @p rectangle
-   * tilts the other way).
+   * draws its azimuth again).
    */
   std::vector<Ligament>
   place_ligaments(const LayerStack               &layers,
