@@ -228,6 +228,10 @@ namespace ssc
                 ExcMessage("Embedded/Ligaments/Tension only needs Newton's "
                            "method: give at least one layer a nonlinear "
                            "Material model (corotational or neo-Hookean)."));
+    AssertThrow(embedded.ligament_contraction == 0 || layers.nonlinear(),
+                ExcMessage("Embedded/Ligaments/Contraction needs finite "
+                           "strain: give the layers a nonlinear Material "
+                           "model (corotational or neo-Hookean)."));
     AssertThrow(!embedded.septum_tension_field || layers.nonlinear(),
                 ExcMessage("Embedded/Septa/Tension field needs Newton's "
                            "method: give at least one layer a nonlinear "

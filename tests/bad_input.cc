@@ -188,6 +188,10 @@ main(int argc, char **argv)
   check("growth where no lobule may grow",
         growth + "subsection Growth\n  set Layers = fat\n"
                  "  set Growing lobule fraction = 0\nend\n");
+  check("contracted ligaments at small strain",
+        std::string(valid_stack) +
+          "subsection Embedded\n  subsection Ligaments\n"
+          "    set Contraction = 0.1\n  end\nend\n");
   check("ligaments inclined beyond 75 degrees",
         std::string(valid_stack) +
           "subsection Microstructure\n  subsection Ligaments\n"

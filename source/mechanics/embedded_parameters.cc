@@ -73,6 +73,14 @@ namespace ssc
                       "A compressed ligament is slack and carries no force "
                       "(finite strain, i.e. with a nonlinear layer model, "
                       "only).");
+    prm.add_parameter(
+      "Contraction",
+      ligament_contraction,
+      "Fibrotic shortening c of the ligaments: they are stress-free at "
+      "(1 - c) times their length in the reference configuration, so they "
+      "pull on the skin before any load (cellulite's septa are described as "
+      "contracted and sclerosed; no measured value). Finite strain only.",
+      Patterns::Double(0, 0.5));
     prm.add_parameter("Quadrature points",
                       ligament_quadrature,
                       "Gauss points on each piece of a ligament segment "

@@ -190,17 +190,19 @@ namespace ssc
     for (unsigned int q = 0; q < local.size(); ++q)
       {
         const Tensor<2, 3> F = deformation_gradient(fe_values, q, u, g);
-        // e = (|F tau|^2 - 1) / 2, S = E A e; de/du_i = a_ci (g_i . tau)
+        // e = (|F tau|^2 / lambda_0^2 - 1) / 2, S = E A e;
+        // de/du_i = a_ci (g_i . tau) / lambda_0^2 =: s a_ci (g_i . tau)
         const Tensor<1, 3> &d = local[q].direction;
         const Tensor<1, 3>  a = F * d;
-        const double        e = 0.5 * (a * a - 1.);
+        const double        e = cable->strain(a * a);
+        const double        s = cable->strain_scale();
         const double        S = local[q].JxW * cable->axial_force(e);
         const double        k =
           cable->slack(e) ? 0. : local[q].JxW * cable->stiffness();
         for (unsigned int i = 0; i < n; ++i)
           {
             gd[i] = g[i] * d;
-            de[i] = a[component[i]] * gd[i];
+            de[i] = s * a[component[i]] * gd[i];
             cell_residual(i) += S * de[i];
           }
         if (with_matrix)
@@ -208,7 +210,7 @@ namespace ssc
             for (unsigned int j = 0; j < n; ++j)
               cell_matrix(i, j) +=
                 k * de[i] * de[j] +
-                (component[i] == component[j] ? S * gd[i] * gd[j] : 0.);
+                (component[i] == component[j] ? s * S * gd[i] * gd[j] : 0.);
       }
   }
 

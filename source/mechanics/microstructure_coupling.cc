@@ -20,7 +20,8 @@ namespace ssc
              embedded.septum_tension_field)
     , ligament(embedded.ligament_youngs_modulus,
                embedded.ligament_area(),
-               embedded.ligament_tension_only)
+               embedded.ligament_tension_only,
+               1. - embedded.ligament_contraction)
     , system(system)
     , timer(timer)
     , pcout(pcout)

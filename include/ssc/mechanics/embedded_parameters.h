@@ -22,6 +22,9 @@ namespace ssc
     double       ligament_diameter       = 0.3;
     unsigned int ligament_quadrature     = 2;
     bool         ligament_tension_only   = false;
+    /// Fibrotic shortening c of the ligaments: stress-free at (1 - c) times
+    /// their reference length.
+    double ligament_contraction = 0;
 
     /// Cross-section area of a ligament, mm^2.
     double
