@@ -14,6 +14,10 @@ range, the others at their central values, for
 
     /usr/bin/python3 benchmarks/growth_sensitivity.py [--jobs 2]
 
+Then the sourced corner most favourable to the clinical picture (every
+parameter at the end that raised Sa, or the ratio) and, beyond the sources,
+the bands contracted by 10 and 20 % (Embedded/Ligaments/Contraction).
+
 Runs every case once (one MPI rank each, --jobs at a time) and keeps its
 summary in benchmarks/results/growth_runs/<case>/summary.json (delete a
 folder to rerun); writes benchmarks/results/growth_sensitivity.csv and the
@@ -101,6 +105,9 @@ def run_case(case, scene, overrides):
             return None
         os.makedirs(os.path.join(RUNS, case), exist_ok=True)
         shutil.copy(os.path.join(work, case, "summary.json"), kept)
+        # the surface itself, for the pictures (not kept in git)
+        shutil.copy(os.path.join(work, case, "elevation.csv"),
+                    os.path.join(RUNS, case))
         shutil.rmtree(work)
     with open(kept) as f:
         return json.load(f)
@@ -121,6 +128,32 @@ def cases():
     return out
 
 
+def extreme_cases(rows):
+    """The sourced corner most favourable to the clinical picture: every
+    parameter at the end of its range that gave the larger Sa (cellulite)
+    or the larger SAT/DAT ratio (injection); and, beyond the sources, the
+    cellulite scene with the bands contracted (Embedded/Ligaments/
+    Contraction, fibrotic shortening that no study measures)."""
+    rough, ratio_best = {}, {}
+    for key, _, _, low, _, high, overrides in PARAMETERS:
+        lo = lookup(rows, f"buttock_{key}_low")
+        hi = lookup(rows, f"buttock_{key}_high")
+        if lo and hi:
+            rough.update(overrides(low if lo["Sa_mm"] > hi["Sa_mm"] else high))
+        r_lo, r_hi = ratio(rows, key + "_low"), ratio(rows, key + "_high")
+        ratio_best.update(overrides(low if r_lo > r_hi else high))
+    out = [("buttock_roughest", SCENES["buttock"], rough, "roughest",
+            "roughest"),
+           ("cheek_sat_roughest", SCENES["cheek_sat"], ratio_best,
+            "roughest", "roughest"),
+           ("cheek_dat_roughest", SCENES["cheek_dat"], ratio_best,
+            "roughest", "roughest")]
+    for c in (0.1, 0.2):
+        out.append((f"buttock_contraction_{c}", SCENES["buttock"],
+                    {LIG + "Contraction": c}, "contraction", str(c)))
+    return out
+
+
 def metrics(summary):
     s = summary["surface"]
     return {"Sa_mm": s["Sa_mm"], "Sq_mm": s["Sq_mm"], "Svm_mm": s["Svm_mm"],
@@ -133,17 +166,20 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--jobs", type=int, default=2)
     args = parser.parse_args()
-    todo = cases()
-    with ThreadPoolExecutor(args.jobs) as pool:
-        summaries = list(pool.map(lambda c: run_case(c[0], c[1], c[2]), todo))
     rows = []
-    for (case, scene, _, key, end), summary in zip(todo, summaries):
-        if summary is None:
-            continue
-        value = next((p[3] if end == "low" else p[5] for p in PARAMETERS
-                      if p[0] == key), "")
-        rows.append({"case": case, "scene": scene, "parameter": key,
-                     "end": end, "value": value, **metrics(summary)})
+    todo = cases()
+    for stage in (0, 1):
+        with ThreadPoolExecutor(args.jobs) as pool:
+            summaries = list(pool.map(lambda c: run_case(c[0], c[1], c[2]),
+                                      todo))
+        for (case, scene, _, key, end), summary in zip(todo, summaries):
+            if summary is None:
+                continue
+            value = next((p[3] if end == "low" else p[5] for p in PARAMETERS
+                          if p[0] == key), "")
+            rows.append({"case": case, "scene": scene, "parameter": key,
+                         "end": end, "value": value, **metrics(summary)})
+        todo = extreme_cases(rows)
     with open(os.path.join(OUT, "growth_sensitivity.csv"), "w",
               newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -173,6 +209,18 @@ def report(rows):
         print(f"aged skin: Sa {aged['Sa_mm']:.3f} mm "
               f"({aged['Sa_mm'] / c['Sa_mm'] - 1:+.0%})")
     print(f"injection, central: SAT/DAT Sq ratio {ratio(rows, 'central'):.2f}")
+    rough = lookup(rows, "buttock_roughest")
+    if rough:
+        print(f"cellulite, every parameter at its rougher end: Sa "
+              f"{rough['Sa_mm']:.3f} Svm {rough['Svm_mm']:.3f} mm; injection "
+              f"at the ends of larger ratio: SAT/DAT "
+              f"{ratio(rows, 'roughest'):.2f}")
+    for c in (0.1, 0.2):
+        r = lookup(rows, f"buttock_contraction_{c}")
+        if r:
+            print(f"cellulite, bands contracted by {c:.0%}: Sa "
+                  f"{r['Sa_mm']:.3f} Svm {r['Svm_mm']:.3f} mm, "
+                  f"{r['dimples']} dimples")
     print("| parameter | low | high | Sa low / high (mm) | Svm low / high "
           "(mm) | SAT/DAT low / high |")
     print("|---|---|---|---|---|---|")
