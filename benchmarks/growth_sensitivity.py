@@ -84,9 +84,15 @@ def central_overrides():
     return overrides
 
 
+KEPT_ONLY = False
+
+
 def run_case(case, scene, overrides):
-    """Runs @p scene with @p overrides unless kept; returns its summary."""
+    """Runs @p scene with @p overrides unless kept; returns its summary
+    (None where the run failed, or was not kept with --kept-only)."""
     kept = os.path.join(RUNS, case, "summary.json")
+    if not os.path.exists(kept) and KEPT_ONLY:
+        return None
     if not os.path.exists(kept):
         work = tempfile.mkdtemp(prefix="growth_")
         command = [SSC, os.path.join(ROOT, "prm", scene + ".prm"),
@@ -165,7 +171,11 @@ def metrics(summary):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--kept-only", action="store_true",
+                        help="report and plot the kept runs, run nothing")
     args = parser.parse_args()
+    global KEPT_ONLY
+    KEPT_ONLY = args.kept_only
     rows = []
     todo = cases()
     for stage in (0, 1):
