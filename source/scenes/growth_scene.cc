@@ -190,9 +190,8 @@ namespace ssc
               << result.metrics[k].max_elevation << ','
               << result.metrics[k].mean_elevation << ','
               << result.metrics[k].roughness << ',' << result.metrics[k].Sa
-              << ',' << result.metrics[k].Sp + result.metrics[k].Sv << ','
-              << result.metrics[k].Svm << ','
-              << result.metrics[k].dimples.size() << ','
+              << ',' << result.metrics[k].Sz() << ',' << result.metrics[k].Svm
+              << ',' << result.metrics[k].dimples.size() << ','
               << json["dimples"]["max_depth_mm"].get<double>() << ','
               << result.metrics[k].uplift_volume << ','
               << driver.statistics()[k].newton_iterations << ','

@@ -245,7 +245,7 @@ namespace ssc
             {"Sq_mm", roughness},
             {"Sp_mm", Sp},
             {"Sv_mm", Sv},
-            {"Sz_mm", Sp + Sv},
+            {"Sz_mm", Sz()},
             {"Spm_mm", Spm},
             {"Svm_mm", Svm},
             {"dimples", dimples_json(dimples)}};

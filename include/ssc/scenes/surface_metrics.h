@@ -66,6 +66,13 @@ namespace ssc
     /// The grid indices of the window, both ends included.
     unsigned int first_x = 0, last_x = 0, first_y = 0, last_y = 0;
 
+    /// ISO 25178's maximum height Sz = Sp + Sv, mm.
+    double
+    Sz() const
+    {
+      return Sp + Sv;
+    }
+
     /// Evaluates @p elevation (spacing uniform in x and in y) in the window
     /// of @p half_width (0: the whole grid).
     static SurfaceMetrics
