@@ -20,7 +20,9 @@ of the skin modulus factor, 0.5, is the aged skin: aging should raise Sa.
 Also the sourced corners most favourable to the clinical picture
 (CELLULITE_CORNER, INJECTION_CORNER: the ends chosen from the
 one-at-a-time results) and, beyond the sources, the bands contracted by 10
-and 20 % (Embedded/Ligaments/Contraction).
+and 20 % (Embedded/Ligaments/Contraction). And the mechanism the study
+found decisive, which no study measures: septa that grow with the fat
+(Growth/Septum growth 0.5 and 1) instead of being stretched by it.
 
 Runs every case once (one MPI rank each, --jobs at a time) and keeps its
 summary in benchmarks/results/growth_runs/<case>/summary.json (delete a
@@ -174,7 +176,17 @@ def corner_cases():
         out.append((f"buttock_contraction_{c}", SCENES["buttock"],
                     {**central_overrides(), LIG + "Contraction": c},
                     "contraction", str(c)))
+    for f in SEPTUM_GROWTH:
+        for short, scene in SCENES.items():
+            out.append((f"{short}_septum_growth_{f}", scene,
+                        {**central_overrides(), "Growth/Septum growth": f},
+                        "septum_growth", str(f)))
     return out
+
+
+# How far the septa grow with the fat (beyond the sources: 0 is the
+# central case, the septa stretched by the growing lobules).
+SEPTUM_GROWTH = (1, 0.5)
 
 
 def metrics(summary):
@@ -190,11 +202,18 @@ def main():
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--kept-only", action="store_true",
                         help="report and plot the kept runs, run nothing")
+    parser.add_argument("--only", default="",
+                        help="run only the cases whose name contains this "
+                        "(the kept others are still reported)")
     args = parser.parse_args()
     global KEPT_ONLY
     KEPT_ONLY = args.kept_only
     rows = []
     todo = cases() + corner_cases()
+    if args.only:
+        todo = [c for c in todo
+                if args.only in c[0]
+                or os.path.exists(os.path.join(RUNS, c[0], "summary.json"))]
     with ThreadPoolExecutor(args.jobs) as pool:
         summaries = list(pool.map(lambda c: run_case(c[0], c[1], c[2]),
                                   todo))

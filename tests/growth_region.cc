@@ -12,7 +12,11 @@
 //   reshuffle each other);
 // - the same seed draws the same weights, another seed others;
 // - in an ellipsoid only the lobules with their centroid inside grow;
-// - the weight at a lobule's centroid is that lobule's weight.
+// - the weight at a lobule's centroid is that lobule's weight;
+// - a septum's weight (the septa that grow with the fat) is the mean of
+//   its two lobules' weights at their centroids, with spread and fraction
+//   and in the ellipsoid, where the walls of the site's boundary grow half
+//   as much.
 
 #include <cmath>
 #include <map>
@@ -37,6 +41,27 @@ namespace
       for (const ssc::Lobule &lobule : layer.lobules)
         w.push_back(region(lobule.centroid, lobule.layer));
     return w;
+  }
+
+  /// The septa whose weight is not the mean of their lobules' weights at
+  /// the centroids.
+  unsigned int
+  wrong_septum_weights(const ssc::GrowthRegion   &region,
+                       const ssc::Microstructure &microstructure)
+  {
+    std::map<unsigned int, const ssc::Lobule *> by_id;
+    for (const ssc::LayerLobules &layer : microstructure.lobule_layers())
+      for (const ssc::Lobule &lobule : layer.lobules)
+        by_id[lobule.id] = &lobule;
+    unsigned int wrong = 0;
+    for (const ssc::Septum &septum : microstructure.septa())
+      {
+        double mean = 0;
+        for (const unsigned int id : septum.lobules)
+          mean += region(by_id.at(id)->centroid, septum.layer) / 2;
+        wrong += std::abs(region.septum_weight(septum) - mean) > 1e-14;
+      }
+    return wrong;
   }
 
   const char *
@@ -117,7 +142,10 @@ main(int argc, char **argv)
   deallog << "fraction 0.3: growing share within three standard errors: "
           << yes_no(std::abs(share - 0.3) < 3 * std::sqrt(0.3 * 0.7 / n))
           << "; weights of the growing lobules as with fraction 1: "
-          << yes_no(growing > 0 && changed == 0) << std::endl;
+          << yes_no(growing > 0 && changed == 0) << "; septum weights not "
+          << "the mean of their lobules': "
+          << wrong_septum_weights(partial, microstructure) << " of "
+          << microstructure.septa().size() << std::endl;
 
   growth.growing_lobule_fraction = 1;
   const ssc::GrowthRegion same(layers, growth, &microstructure);
@@ -141,7 +169,15 @@ main(int argc, char **argv)
         inside += grows;
         mismatched += site(lobule.centroid, lobule.layer) != (grows ? 1. : 0.);
       }
+  std::map<double, unsigned int> septa_by_weight;
+  for (const ssc::Septum &septum : microstructure.septa())
+    ++septa_by_weight[site.septum_weight(septum)];
   deallog << "ellipsoid: " << site.lobule_weights().size()
           << " lobules grow, centroids inside " << inside
           << ", weights at the centroids wrong " << mismatched << std::endl;
+  deallog << "ellipsoid: septa of weight";
+  for (const auto &[weight, count] : septa_by_weight)
+    deallog << " " << weight << ": " << count;
+  deallog << "; not the mean of their lobules': "
+          << wrong_septum_weights(site, microstructure) << std::endl;
 }

@@ -15,7 +15,11 @@
 // without stabilisation and growth, and with the mean dilatation (P0) and
 // embedded structures. A rigid rotation
 // by 60 degrees leaves every law stress-free (objectivity); with a uniform
-// growth g, so does the rotated expansion by (1 + g)^{1/3}.
+// growth g, so does the rotated expansion by (1 + g)^{1/3}. A membrane
+// that grows with the material (EmbeddedStiffness::grow_with(), a growth
+// weight that differs between its triangles) has the tangent of its residual
+// too, and with uniform growth of both the rotated expansion is stress-free for
+// it as well; at small strain the expansion by g / 3 is (the eigenstrain).
 
 #include <deal.II/dofs/dof_tools.h>
 
@@ -54,8 +58,9 @@ main(int argc, char **argv)
   Triangulation<2, 3> membrane;
   {
     std::vector<CellData<2>> triangles(2, CellData<2>(3));
-    triangles[0].vertices = {0, 1, 2};
-    triangles[1].vertices = {0, 2, 3};
+    triangles[0].vertices    = {0, 1, 2};
+    triangles[1].vertices    = {0, 2, 3};
+    triangles[1].material_id = 1;
     membrane.create_triangulation(
       std::vector<Point<3>>{Point<3>(-0.9, -0.8, -0.3),
                             Point<3>(0.9, -0.6, -1.9),
@@ -117,16 +122,23 @@ main(int argc, char **argv)
         "Q2, neo-Hookean, mixed (P1 dilatation)",
         "Q2, corotational, mixed (P1 dilatation), volumetric stabilisation "
         "0.1, growth",
-        "Q2, neo-Hookean, mean dilatation + membrane + cable"})
+        "Q2, neo-Hookean, mean dilatation + membrane + cable",
+        "neo-Hookean, mixed + growing membrane, growth",
+        "neo-Hookean, mixed + growing tension-field membrane, growth",
+        "linear, displacement + growing membrane, growth"})
     {
       for (unsigned int l = 0; l < 2; ++l)
         layers.set_model(l,
                          variant.find("corotational") != std::string::npos ?
                            ssc::MaterialModel::corotational :
+                         variant.find("linear") == 0 ?
+                           ssc::MaterialModel::linear :
                            ssc::MaterialModel::neo_hookean);
       const bool   tension_only = variant.find("tension") != std::string::npos;
       const bool   growth       = variant.find("growth") != std::string::npos;
       const bool   on_faces     = variant.find("faces") != std::string::npos;
+      const bool   growing      = variant.find("growing") != std::string::npos;
+      const bool   linear       = variant.find("linear") == 0;
       const double stretch =
         variant.find("compressed") != std::string::npos ? -0.05 : 0.2;
       const auto formulation =
@@ -169,19 +181,31 @@ main(int argc, char **argv)
             elasticity.field().fe(),
             elasticity.field().mapping(),
             MPI_COMM_WORLD);
+          if (!growing)
+            elasticity.attach(*ligament);
           if (on_faces)
             deallog << variant << ": embedded area " << area << " (exact 4), "
                     << "length " << length << " (exact 2)" << std::endl;
           elasticity.attach(*septum);
-          elasticity.attach(*ligament);
         }
 
-      // a growth that varies within the cells
+      // a growth that varies within the cells; the growing membrane's
+      // triangles grow by 0.8 of 0.2 and 0.5
+      const auto varying_growth = [](const Point<3> &p) {
+        return 0.3 + 0.2 * p[0] - 0.1 * p[2];
+      };
       if (growth)
         elasticity.growth().sample(elasticity.field(),
-                                   [](const Point<3> &p, const unsigned int) {
-                                     return 0.3 + 0.2 * p[0] - 0.1 * p[2];
+                                   [&](const Point<3> &p, const unsigned int) {
+                                     return varying_growth(p);
                                    });
+      if (growing)
+        septum->grow_with(
+          elasticity.growth(),
+          [](const types::material_id triangle) {
+            return 0.2 + 0.3 * triangle;
+          },
+          0.8);
 
       std::mt19937                           generator(5);
       std::uniform_real_distribution<double> uniform(-0.05, 0.05);
@@ -224,18 +248,27 @@ main(int argc, char **argv)
         const Tensor<2, 3> axis_cross({{0., -axis[2], axis[1]},
                                        {axis[2], 0., -axis[0]},
                                        {-axis[1], axis[0], 0.}});
-        const Tensor<2, 3> rotation =
+        Tensor<2, 3>       rotation =
           std::cos(angle) * unit_symmetric_tensor<3>() +
           std::sin(angle) * axis_cross +
           (1. - std::cos(angle)) * outer_product(axis, axis);
         // with a uniform growth g the stress-free state is the rotation
         // of the expansion (1 + g)^{1/3} X
-        const double expansion = growth ? std::cbrt(1.4) : 1.;
+        const double expansion = !growth ? 1. :
+                                 linear  ? 1. + 0.4 / 3. :
+                                           std::cbrt(1.4);
         if (growth)
           elasticity.growth().sample(elasticity.field(),
                                      [](const Point<3> &, const unsigned int) {
                                        return 0.4;
                                      });
+        if (growing)
+          septum->grow_with(
+            elasticity.growth(),
+            [](const types::material_id) { return 0.4; },
+            1.);
+        if (linear)
+          rotation = unit_symmetric_tensor<3>();
         TrilinosWrappers::MPI::Vector rigid(u);
         for (const auto &[dof, X] : support)
           rigid[dof] =
@@ -265,7 +298,8 @@ main(int argc, char **argv)
         elasticity.field().set_solution(rigid);
         elasticity.assemble(false);
         deallog << variant
-                << (growth ? ": uniform growth 0.4, rotated expansion" :
+                << (linear ? ": uniform growth 0.4, expansion by 0.4 / 3" :
+                    growth ? ": uniform growth 0.4, rotated expansion" :
                              ": rigid rotation")
                 << ", largest |r| / largest |K| below 1e-10: "
                 << (elasticity.rhs().linfty_norm() / largest_entry < 1e-10 ?

@@ -55,11 +55,40 @@ namespace ssc
           {
             points_per_cell[index].push_back({cell_quadrature.unit_points[q],
                                               cell_quadrature.directions[q],
-                                              cell_quadrature.JxW[q]});
+                                              cell_quadrature.JxW[q],
+                                              cell_quadrature.materials[q]});
             ++n_local;
           }
       }
     n_global_points = Utilities::MPI::sum(n_local, communicator);
+  }
+
+
+  void
+  EmbeddedStiffness::grow_with(
+    const GrowthField                                     &growth_field,
+    const std::function<double(const types::material_id)> &weight,
+    const double                                           follow)
+  {
+    AssertThrow(membrane.has_value(),
+                ExcMessage("Only membranes grow with the material."));
+    growth        = &growth_field;
+    growth_follow = follow;
+    for (std::vector<LocalPoint> &local : points_per_cell)
+      for (LocalPoint &point : local)
+        point.growth_weight = weight(point.material);
+  }
+
+
+  double
+  EmbeddedStiffness::growth_stretch_square(const double weight) const
+  {
+    if (growth == nullptr)
+      return 1.;
+    const double volume_ratio = 1. + growth_follow * growth->scale() * weight;
+    AssertThrow(volume_ratio > 0,
+                ExcMessage("A septum's growth shrinks it to nothing."));
+    return std::cbrt(volume_ratio * volume_ratio);
   }
 
 
@@ -144,6 +173,15 @@ namespace ssc
           }
         const double first  = local[q].JxW * t_lambda;
         const double second = local[q].JxW * t_two_mu;
+        if (membrane && growth != nullptr)
+          {
+            // the eigenstrain e P, e = (lambda_g^3 - 1) / 3, adds
+            // -e (2 t lambda_ps + 2 t mu) P:d eps to the residual
+            const double e =
+              growth_follow * growth->scale() * local[q].growth_weight / 3.;
+            for (unsigned int i = 0; i < n; ++i)
+              cell_residual(i) -= e * (2. * first + second) * trace[i];
+          }
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             {
@@ -241,8 +279,13 @@ namespace ssc
         const Tensor<1, 3> &d = local[q].direction;
         Tensor<2, 3>        P = unit_symmetric_tensor<3>();
         P -= outer_product(d, d);
-        const Tensor<2, 3>       E     = 0.5 * (P * transpose(F) * F * P - P);
-        const Tensor<2, 3>       PFt   = P * transpose(F);
+        // A grown membrane (grow_with()) is stress-free at P C P =
+        // lambda_g^2 P: its energy lambda_g^2 W(E_e), E_e = (P C P /
+        // lambda_g^2 - P) / 2, has dW/dE = S(E_e) and d2W/dE2 =
+        // D(E_e) / lambda_g^2.
+        const double stretch2 = growth_stretch_square(local[q].growth_weight);
+        const Tensor<2, 3> E  = 0.5 * (P * transpose(F) * F * P / stretch2 - P);
+        const Tensor<2, 3> PFt         = P * transpose(F);
         const MembraneLaw::State state = membrane->state(E, P, local[q].JxW);
         const auto [t1, t2]            = MembraneLaw::tangent_basis(d);
         const std::array<Tensor<2, 3>, 3> basis = {
@@ -255,7 +298,7 @@ namespace ssc
           {
             s[k] = scalar_product(state.stress, basis[k]);
             for (unsigned int l = 0; l < 3; ++l)
-              D[k][l] = state.second_derivative(basis[k], basis[l]);
+              D[k][l] = state.second_derivative(basis[k], basis[l]) / stretch2;
           }
         for (unsigned int i = 0; i < n; ++i)
           {

@@ -114,6 +114,29 @@ namespace ssc
   }
 
 
+  void
+  MicrostructureCoupling::grow_septa(
+    const GrowthField                         &growth,
+    const std::function<double(unsigned int)> &weight,
+    const double                               follow)
+  {
+    if (!septa || follow == 0)
+      return;
+    septum_growth_weight = weight;
+    septa->grow_with(growth, weight, follow);
+  }
+
+
+  double
+  MicrostructureCoupling::septum_growth_stretch_square(
+    const unsigned int septum) const
+  {
+    return septum_growth_weight ?
+             septa->growth_stretch_square(septum_growth_weight(septum)) :
+             1.;
+  }
+
+
   nlohmann::ordered_json
   MicrostructureCoupling::embedded_summary() const
   {

@@ -34,16 +34,17 @@ namespace ssc
     /// it in <family>.pvd.
     template <int dim>
     void
-    write_family(const EmbeddedFieldWriter<dim>                    &writer,
-                 const std::string                                 &family,
-                 const std::string                                 &name,
+    write_family(const EmbeddedFieldWriter<dim>                  &writer,
+                 const std::string                               &family,
+                 const std::string                               &name,
                  const std::function<double(const Tensor<2, 3> &,
-                                            const Tensor<1, 3> &)> &measure,
-                 const std::string                                 &id_name,
-                 const DisplacementField                           &field,
-                 RunOutput                                         &output,
-                 const unsigned int                                 step,
-                 const double                                       time)
+                                            const Tensor<1, 3> &,
+                                            types::material_id)> &measure,
+                 const std::string                               &id_name,
+                 const DisplacementField                         &field,
+                 RunOutput                                       &output,
+                 const unsigned int                               step,
+                 const double                                     time)
     {
       const std::string file =
         family + "_" + Utilities::int_to_string(step, 4) + ".vtu";
@@ -51,9 +52,11 @@ namespace ssc
                    file,
                    field,
                    {{name,
-                     [&](const Tensor<2, 3> &F,
-                         const Tensor<1, 3> &direction,
-                         types::material_id) { return measure(F, direction); }},
+                     [&](const Tensor<2, 3>      &F,
+                         const Tensor<1, 3>      &direction,
+                         const types::material_id material) {
+                       return measure(F, direction, material);
+                     }},
                     {id_name,
                      [](const Tensor<2, 3> &,
                         const Tensor<1, 3> &,
@@ -77,8 +80,15 @@ namespace ssc
         *septa_writer,
         "septa",
         "membrane_stress_von_mises",
-        [this](const Tensor<2, 3> &F, const Tensor<1, 3> &normal) {
-          return coupling.septum_law().von_mises_stress(F, normal, kinematics);
+        [this](const Tensor<2, 3>      &F,
+               const Tensor<1, 3>      &normal,
+               const types::material_id septum) {
+          // a grown septum's elastic part: F / lambda_g in its plane
+          const double stretch =
+            std::sqrt(coupling.septum_growth_stretch_square(septum));
+          return coupling.septum_law().von_mises_stress(F / stretch,
+                                                        normal,
+                                                        kinematics);
         },
         "septum",
         field,
@@ -90,7 +100,9 @@ namespace ssc
         *ligament_writer,
         "ligaments",
         "axial_force_N",
-        [this](const Tensor<2, 3> &F, const Tensor<1, 3> &tangent) {
+        [this](const Tensor<2, 3> &F,
+               const Tensor<1, 3> &tangent,
+               types::material_id) {
           return coupling.ligament_law().current_force(F, tangent, kinematics);
         },
         "ligament",

@@ -94,6 +94,19 @@ namespace ssc
                       "Each lobule of the region grows with this probability "
                       "(1: all of them); the others keep their volume.",
                       Patterns::Double(0, 1));
+    prm.add_parameter(
+      "Septum growth",
+      septum_growth,
+      "How far the septa grow with the fat either side of them (finite "
+      "and small strain): their stress-free state is stretched in their "
+      "plane by (1 + f g)^(1/3), g the mean growth ratio of the two "
+      "lobules a septum separates, f this factor. 0: the septa keep their "
+      "size and the growing lobules stretch them (hypertrophy inside a "
+      "fixed fibrous frame); 1: they grow as a line of the fat does, so "
+      "uniform growth of lobules and septa alike is stress-free (the frame "
+      "remodels with the fat). How much septa remodel in cellulite is not "
+      "measured: a parameter to study, 0 to 1.",
+      Patterns::Double(0, 1));
     prm.add_parameter("Random seed",
                       growth_seed,
                       "Seed of the draws of the lobules' growth (the "

@@ -28,6 +28,8 @@ namespace ssc
         {
           LayerSelection &selection = selections[lobules.layer];
           selection.locator = std::make_unique<LobuleLocator>(layers, lobules);
+          if (!lobules.lobules.empty())
+            selection.first_id = lobules.lobules.front().id;
           for (const Lobule &lobule : lobules.lobules)
             {
               // both draws for every lobule, so that the fraction and the
@@ -56,6 +58,22 @@ namespace ssc
           return selection.weight[lobule];
       }
     return parameters.contains(p) ? 1. : 0.;
+  }
+
+
+  double
+  GrowthRegion::septum_weight(const Septum &septum) const
+  {
+    const LayerSelection &selection = selections[septum.layer];
+    if (!layer_selected[septum.layer] || !selection.locator)
+      return 0.;
+    double sum = 0;
+    for (const unsigned int id : septum.lobules)
+      {
+        AssertIndexRange(id - selection.first_id, selection.weight.size());
+        sum += selection.weight[id - selection.first_id];
+      }
+    return sum / 2;
   }
 
 

@@ -83,6 +83,18 @@ namespace ssc
                                        const unsigned int layer) {
                                return region(p, layer);
                              });
+      if (coupling.get_microstructure() != nullptr)
+        {
+          std::vector<double> septum_weights;
+          for (const Septum &septum : coupling.get_microstructure()->septa())
+            septum_weights.push_back(region.septum_weight(septum));
+          coupling.grow_septa(
+            system.growth(),
+            [septum_weights](const unsigned int septum) {
+              return septum_weights[septum];
+            },
+            growth.septum_growth);
+        }
       lobule_weights         = region.lobule_weights();
       result.selected_volume = system.growth().volume(system.field());
       AssertThrow(result.selected_volume > 0,
@@ -224,6 +236,7 @@ namespace ssc
                  {"growing_lobules", lobule_weights.size()},
                  {"lobule_growth_spread", growth.lobule_growth_spread},
                  {"growing_lobule_fraction", growth.growing_lobule_fraction},
+                 {"septum_growth", growth.septum_growth},
                  {"lobule_weights", lobule_weights},
                  {"stress_free_added_volume_mm3",
                   result.growth_ratio * result.selected_volume},

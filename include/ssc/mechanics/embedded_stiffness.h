@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -16,6 +17,7 @@
 #include <ssc/materials/cable_law.h>
 #include <ssc/materials/membrane_law.h>
 #include <ssc/mechanics/cell_contribution.h>
+#include <ssc/mechanics/growth_field.h>
 
 namespace ssc
 {
@@ -57,6 +59,28 @@ namespace ssc
                 FullMatrix<double>                        &cell_matrix,
                 Vector<double> &cell_residual) const override;
 
+    /**
+     * Lets membranes grow with the material around them (septa that
+     * remodel with the fat): the stress-free state of the membrane at a
+     * point is its reference stretched in its plane by lambda_g = (1 +
+     * @p follow s w)^{1/3}, s the current scale of @p growth and w =
+     * @p weight(material id of the point: its septum); the energy per reference
+     * area is then lambda_g^2 W(E_e) with E_e = (P C P / lambda_g^2 - P) / 2
+     * (finite strain), the eigenstrain (lambda_g^3 - 1) / 3 P at small
+     * strain. @p follow = 1 grows the membranes as the isotropic growth s w
+     * grows a line of the volume; 0 keeps them as they are. @p growth must
+     * outlive this.
+     */
+    void
+    grow_with(const GrowthField                                     &growth,
+              const std::function<double(const types::material_id)> &weight,
+              const double                                           follow);
+
+    /// The in-plane growth stretch squared, lambda_g^2, of the point with
+    /// growth weight @p weight (1 without growth).
+    double
+    growth_stretch_square(const double weight) const;
+
     /// Quadrature points on all ranks.
     unsigned int
     n_points() const
@@ -68,9 +92,11 @@ namespace ssc
     /// What one located quadrature point needs for the assembly.
     struct LocalPoint
     {
-      Point<3>     unit_point;
-      Tensor<1, 3> direction;
-      double       JxW;
+      Point<3>           unit_point;
+      Tensor<1, 3>       direction;
+      double             JxW;
+      types::material_id material;          ///< of the embedded cell
+      double             growth_weight = 0; ///< w of grow_with()
     };
 
     void
@@ -123,7 +149,10 @@ namespace ssc
     /// The displacement component of each of a cell's dofs.
     std::vector<unsigned int>            component;
     std::vector<std::vector<LocalPoint>> points_per_cell;
-    unsigned int                         n_global_points = 0;
+    /// The growth the membranes follow (null: they do not grow).
+    const GrowthField *growth          = nullptr;
+    double             growth_follow   = 0;
+    unsigned int       n_global_points = 0;
   };
 } // namespace ssc
 

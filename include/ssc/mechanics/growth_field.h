@@ -54,6 +54,13 @@ namespace ssc
       growth_scale = scale;
     }
 
+    /// The growth scale s.
+    double
+    scale() const
+    {
+      return growth_scale;
+    }
+
     /// The growth ratio s g at quadrature point @p q of @p cell (0 without
     /// growth).
     double

@@ -75,6 +75,22 @@ namespace ssc
       return cables != nullptr;
     }
 
+    /**
+     * Lets the septa grow with the fat (EmbeddedStiffness::grow_with()) by
+     * the growth weight @p weight(septum) of each septum (an index into
+     * Microstructure::septa()): @p follow = 1 grows them as a line of the
+     * fat grows, 0 not at all. Nothing happens without coupled septa.
+     */
+    void
+    grow_septa(const GrowthField                         &growth,
+               const std::function<double(unsigned int)> &weight,
+               const double                               follow);
+
+    /// The in-plane growth stretch squared of the septum @p septum now (1
+    /// when the septa do not grow).
+    double
+    septum_growth_stretch_square(const unsigned int septum) const;
+
     const MembraneLaw &
     septum_law() const
     {
@@ -112,6 +128,8 @@ namespace ssc
     std::unique_ptr<Microstructure>    microstructure;
     std::unique_ptr<PointLocator>      locator;
     std::unique_ptr<EmbeddedStiffness> septa, cables;
+    /// The growth weight of each septum (empty: the septa do not grow).
+    std::function<double(unsigned int)> septum_growth_weight;
     /// Wall time to split septa and ligaments along the background cells.
     double clip_seconds = 0;
     /// Area of septa and length of ligaments in the quadrature, and their

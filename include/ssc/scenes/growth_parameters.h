@@ -53,6 +53,10 @@ namespace ssc
     double growing_lobule_fraction = 1;
     /// Seed of the draws of the lobules' weights.
     unsigned int growth_seed = 1;
+    /// How far the septa grow with the fat either side of them (0: not at
+    /// all, the hypertrophied lobules stretch them; 1: as a line of the fat
+    /// grows, the septa remodel with the lobules).
+    double septum_growth = 0;
 
     /// Whether @p p lies in the region (always, for the whole patch).
     bool

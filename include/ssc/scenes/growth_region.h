@@ -35,6 +35,11 @@ namespace ssc
     double
     operator()(const Point<3> &p, const unsigned int layer) const;
 
+    /// The growth weight of a septum: the mean of its two lobules' (a wall
+    /// between a growing and a resting lobule grows half as much).
+    double
+    septum_weight(const Septum &septum) const;
+
     /// The weights of the lobules that grow, all layers.
     std::vector<double>
     lobule_weights() const;
@@ -46,6 +51,8 @@ namespace ssc
     {
       std::unique_ptr<LobuleLocator> locator;
       std::vector<double>            weight;
+      /// Lobule::id of the layer's first lobule (ids run on).
+      unsigned int first_id = 0;
     };
 
     const LayerStack           &layers;
