@@ -13,6 +13,10 @@
 // and the bottom's reaction form a couple that the normal forces balance,
 // loading the leading edge more (about +-50 % at F_t = mu N), so the
 // trailing nodes reach their limit first, as a real sliding block's do.
+// An increment abandoned after a pass that updated the normal forces
+// (PunchFriction::reject(), called when the load stepping cuts) leaves
+// them as the last accepted increment handed them on: accepting the
+// converged state again then settles at once.
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -103,6 +107,25 @@ main(int argc, char **argv)
                   << (worst_slip < 1e-6 ? "yes" : "no") << std::endl;
   dealii::deallog << "F_t never above mu N: " << (all_within ? "yes" : "no")
                   << std::endl;
+  {
+    // a pass at a state far from the converged one changes the normal
+    // forces (the increment is to be solved again); abandoning it must
+    // restore them
+    const dealii::TrilinosWrappers::MPI::Vector converged =
+      system.field().owned_solution();
+    dealii::TrilinosWrappers::MPI::Vector far = converged;
+    far *= 1.5;
+    system.field().set_solution(far);
+    const bool unsettled = !system.accept_state();
+    system.reject_state();
+    system.field().set_solution(converged);
+    dealii::deallog << "a pass 50 % beyond the converged state asks for "
+                       "another solve: "
+                    << (unsettled ? "yes" : "no")
+                    << "; after reject_state() the converged state settles "
+                       "at once: "
+                    << (system.accept_state() ? "yes" : "no") << std::endl;
+  }
   dealii::deallog << "friction balances the bottom's shear reaction to "
                      "1e-6 mu N: "
                   << (worst_balance < 1e-6 ? "yes" : "no") << std::endl;

@@ -60,6 +60,14 @@ namespace ssc
   }
 
 
+  void
+  ElasticSystem::reject_state()
+  {
+    for (DofContribution *contribution : dof_contributions)
+      contribution->reject();
+  }
+
+
   TrilinosWrappers::MPI::Vector
   ElasticSystem::nodal_residual()
   {

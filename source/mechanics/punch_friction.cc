@@ -211,8 +211,17 @@ namespace ssc
     last_state.normal_force =
       Utilities::MPI::sum(state.normal_force, mpi_communicator);
     for (unsigned int i = 0; i < nodes.size(); ++i)
-      nodes[i].normal_force = normal_forces[i];
+      nodes[i].normal_force = nodes[i].accepted_normal_force = normal_forces[i];
     return true;
+  }
+
+
+  void
+  PunchFriction::reject()
+  {
+    for (Node &node : nodes)
+      node.normal_force = node.accepted_normal_force;
+    passes = 0;
   }
 
 

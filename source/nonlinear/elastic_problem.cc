@@ -167,4 +167,11 @@ namespace ssc
   {
     return system.accept_state();
   }
+
+
+  void
+  ElasticProblem::reject_state()
+  {
+    system.reject_state();
+  }
 } // namespace ssc

@@ -90,6 +90,7 @@ namespace ssc
                      "tangent hard for the AMG-preconditioned CG.)"));
         // back to the last converged state, with half the increment
         problem.set_state(start);
+        problem.reject_state();
         apply_load(position);
         ++report.cuts;
         increment *= 0.5;

@@ -53,6 +53,12 @@ namespace ssc
       (void)u;
       return true;
     }
+
+    /// The load increment is abandoned: back to the state of the last
+    /// accept() that returned true. Nothing by default.
+    virtual void
+    reject()
+    {}
   };
 } // namespace ssc
 

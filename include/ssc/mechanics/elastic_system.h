@@ -102,6 +102,12 @@ namespace ssc
     bool
     accept_state();
 
+    /// The load increment is abandoned: the attached dof contributions go
+    /// back to their last accepted increment (NonlinearProblem::
+    /// reject_state()).
+    void
+    reject_state();
+
     /**
      * The residual r = f_int(u) - f_ext of the cells and dof contributions
      * at every dof (locally owned entries), before any boundary condition,

@@ -90,6 +90,12 @@ namespace ssc
     bool
     accept(const TrilinosWrappers::MPI::Vector &u) override;
 
+    /// Back to the normal forces of the last accepted increment, with the
+    /// passes counted afresh: an increment that was cut must not start
+    /// from the normal forces of the larger one, nor with fewer passes.
+    void
+    reject() override;
+
     /// Moves the punch sideways to @p offset (x, y, mm) from where it
     /// first touched the skin.
     void
@@ -119,7 +125,9 @@ namespace ssc
       std::array<types::global_dof_index, 3> dofs;
       double                                 stiffness    = 0;
       double                                 normal_force = 0;
-      Tensor<1, 2>                           stick_point;
+      /// the normal force the last accepted increment handed on
+      double       accepted_normal_force = 0;
+      Tensor<1, 2> stick_point;
     };
 
     /// The node's slip from its stick point at @p u.

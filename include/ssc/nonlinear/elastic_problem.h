@@ -72,6 +72,9 @@ namespace ssc
     bool
     accept_state() override;
 
+    void
+    reject_state() override;
+
   private:
     /// The last update with its constrained entries zeroed.
     VectorType

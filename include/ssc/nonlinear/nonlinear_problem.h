@@ -111,6 +111,13 @@ namespace ssc
     {
       return true;
     }
+
+    /// The load increment is abandoned (the state goes back to the last
+    /// converged one): what accept_state() updated during its passes goes
+    /// back to the last accepted increment's. Nothing by default.
+    virtual void
+    reject_state()
+    {}
   };
 } // namespace ssc
 
