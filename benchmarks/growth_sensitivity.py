@@ -194,14 +194,18 @@ def corner_cases():
             out.append((f"{short}_septum_growth_{f}", scene,
                         {**central_overrides(), "Growth/Septum growth": f},
                         "septum_growth", str(f)))
-    # the injection ratio on a finer mesh (the scenes' 1.25 mm cells against
-    # 0.9 mm)
+    # the injection ratio on a finer mesh (the scenes' 1.25 mm cells in
+    # the centre against 0.9 mm)
     for short in ("cheek_sat", "cheek_dat"):
         for name, extra in (("central", {}),
                             ("septum_growth_1", {"Growth/Septum growth": 1})):
             out.append((f"{short}_{name}_h0.9", SCENES[short],
                         {**central_overrides(), **extra,
                          "Mesh/Cell size": 0.9}, "mesh", name))
+    # and the cellulite's on 1.5 mm cells against 2 mm
+    out.append(("buttock_central_h1.5", SCENES["buttock"],
+                {**central_overrides(), "Mesh/Cell size": 1.5}, "mesh",
+                "central"))
     return out
 
 

@@ -54,7 +54,7 @@ def main():
                                          vmin=-detail, vmax=detail)
         axes[1, k].set_title(
             f"Sa {surface['Sa_mm']:.3g}, Sq {surface['Sq_mm']:.3g}, "
-            f"Svm {surface['Svm_mm']:.3g}, Sz {surface['Sz_mm']:.3g} mm, "
+            f"Svm {surface['Svm_mm']:.3g}, Sz {surface['Sz_mm']:.3g} mm,\n"
             f"{surface['dimples']['count']} dimples", fontsize=9)
         for row in range(2):
             axes[row, k].set_xlabel("x (mm)")
