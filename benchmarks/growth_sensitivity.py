@@ -202,10 +202,19 @@ def corner_cases():
             out.append((f"{short}_{name}_h0.9", SCENES[short],
                         {**central_overrides(), **extra,
                          "Mesh/Cell size": 0.9}, "mesh", name))
-    # and the cellulite's on 1.5 mm cells against 2 mm
+    injection = corner_overrides(INJECTION_CORNER)
+    for short in ("cheek_sat", "cheek_dat"):
+        out.append((f"{short}_corner_h0.9", SCENES[short],
+                    {**injection, "Mesh/Cell size": 0.9}, "mesh", "corner"))
+    # and the cellulite's on 1.5 mm cells against 2 mm, central and at the
+    # corner that reaches the clinical order
     out.append(("buttock_central_h1.5", SCENES["buttock"],
                 {**central_overrides(), "Mesh/Cell size": 1.5}, "mesh",
                 "central"))
+    out.append(("buttock_corner_young_skin_h1.5", SCENES["buttock"],
+                {**corner_overrides({**CELLULITE_CORNER,
+                                     "skin_modulus_factor": "central"}),
+                 "Mesh/Cell size": 1.5}, "mesh", "corner, young skin"))
     return out
 
 
@@ -256,6 +265,7 @@ def main():
         writer.writerows(rows)
     report(rows)
     plot(rows)
+    pictures()
 
 
 def lookup(rows, case):
@@ -284,6 +294,13 @@ def report(rows):
               f"Svm {rough['Svm_mm']:.3f} mm")
     print(f"injection at its sourced corner: SAT/DAT "
           f"{ratio(rows, 'corner'):.2f}")
+    for case in ("buttock_corner_young_skin", "buttock_central_h1.5",
+                 "buttock_corner_young_skin_h1.5"):
+        r = lookup(rows, case)
+        if r:
+            print(f"{case}: Sa {r['Sa_mm']:.3f} Svm {r['Svm_mm']:.3f} mm")
+    for key in ("central_h0.9", "septum_growth_1_h0.9", "corner_h0.9"):
+        print(f"injection, {key}: SAT/DAT {ratio(rows, key):.2f}")
     for c in (0.1, 0.2):
         r = lookup(rows, f"buttock_contraction_{c}")
         if r:
@@ -348,6 +365,35 @@ def plot(rows):
     path = os.path.join(OUT, "growth_sensitivity.png")
     fig.savefig(path, dpi=110)
     print("wrote", path)
+
+
+# Elevation maps (scripts/plot_elevation.py) of kept runs whose surface is
+# here (elevation.csv is not kept in git: rerun a case to draw it).
+PICTURES = {
+    "injection_surfaces.png": [
+        ("cheek_dat_central_h0.9", "DAT, central"),
+        ("cheek_sat_central_h0.9", "SAT, central"),
+        ("cheek_sat_septum_growth_1_h0.9", "SAT, septa grow (f = 1)"),
+        ("cheek_sat_corner_h0.9", "SAT, sourced corner")],
+    "cellulite_surfaces.png": [
+        ("buttock_septum_growth_1", "central, septa grow (f = 1)"),
+        ("buttock_corner_young_skin", "sourced corner (severe.prm)"),
+        ("buttock_corner", "sourced corner, aged skin"),
+        ("buttock_corner_young_skin_h1.5", "sourced corner, 1.5 mm cells")]}
+
+
+def pictures():
+    for name, runs in PICTURES.items():
+        present = [(case, title) for case, title in runs
+                   if os.path.exists(os.path.join(RUNS, case,
+                                                  "elevation.csv"))]
+        if len(present) < 2:
+            continue
+        subprocess.run([sys.executable,
+                        os.path.join(ROOT, "scripts", "plot_elevation.py"),
+                        os.path.join(OUT, name)]
+                       + [f"{os.path.join(RUNS, case)}={title}"
+                          for case, title in present], check=True)
 
 
 if __name__ == "__main__":
