@@ -39,7 +39,7 @@ def main():
                      read_run(folder)))
     top = max(np.abs(r[2]).max() for _, r in runs)
     detail = max(np.abs(r[3]).max() for _, r in runs)
-    fig, axes = plt.subplots(2, len(runs), figsize=(4.2 * len(runs), 7.6),
+    fig, axes = plt.subplots(2, len(runs), figsize=(4.2 * len(runs), 8.6),
                              squeeze=False, constrained_layout=True)
     for k, (title, (x, y, uz, residual, summary)) in enumerate(runs):
         extent = [x[0], x[-1], y[0], y[-1]]
