@@ -81,11 +81,16 @@ namespace ssc
 
 
   double
+  EmbeddedStiffness::growth_ratio(const double weight) const
+  {
+    return growth == nullptr ? 0. : growth_follow * growth->scale() * weight;
+  }
+
+
+  double
   EmbeddedStiffness::growth_stretch_square(const double weight) const
   {
-    if (growth == nullptr)
-      return 1.;
-    const double volume_ratio = 1. + growth_follow * growth->scale() * weight;
+    const double volume_ratio = 1. + growth_ratio(weight);
     AssertThrow(volume_ratio > 0,
                 ExcMessage("A septum's growth shrinks it to nothing."));
     return std::cbrt(volume_ratio * volume_ratio);
@@ -177,8 +182,7 @@ namespace ssc
           {
             // the eigenstrain e P, e = (lambda_g^3 - 1) / 3, adds
             // -e (2 t lambda_ps + 2 t mu) P:d eps to the residual
-            const double e =
-              growth_follow * growth->scale() * local[q].growth_weight / 3.;
+            const double e = growth_ratio(local[q].growth_weight) / 3.;
             for (unsigned int i = 0; i < n; ++i)
               cell_residual(i) -= e * (2. * first + second) * trace[i];
           }

@@ -83,7 +83,7 @@ namespace ssc
                                        const unsigned int layer) {
                                return region(p, layer);
                              });
-      if (coupling.get_microstructure() != nullptr)
+      if (coupling.get_microstructure() != nullptr && growth.septum_growth > 0)
         {
           std::vector<double> septum_weights;
           for (const Septum &septum : coupling.get_microstructure()->septa())

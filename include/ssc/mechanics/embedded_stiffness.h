@@ -89,6 +89,11 @@ namespace ssc
     }
 
   private:
+    /// The volume ratio of a membrane's growth less one, follow s w, at a
+    /// point with growth weight @p weight (0 without growth).
+    double
+    growth_ratio(const double weight) const;
+
     /// What one located quadrature point needs for the assembly.
     struct LocalPoint
     {
