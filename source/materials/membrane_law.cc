@@ -1,5 +1,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -55,6 +56,17 @@ namespace ssc
     // its stress positive semi-definite; so is its consistent tangent (the
     // material part in second_derivative() and the geometric part b.S b of
     // the stiffness are both >= 0).
+    {
+      // E n = 0, so the principal strains of the plane follow from tr(E)
+      // and E:E; most points are taut, and need no eigenvectors
+      const double t = trace(E);
+      const double root =
+        std::sqrt(std::max(2. * scalar_product(E, E) - t * t, 0.));
+      if (state.lambda * (t + root) / 2. +
+            (state.lambda + state.two_mu) * (t - root) / 2. >=
+          0)
+        return state;
+    }
     const auto principal = eigenvectors(symmetrize(E)); // descending
     // the normal of the membrane is an eigenvector of E with eigenvalue 0:
     // drop the eigenvector most aligned with it
