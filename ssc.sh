@@ -10,7 +10,8 @@
 #   ./ssc.sh format-check                   every C++ file formatted with
 #                                           the deal.II .clang-format?
 #   ./ssc.sh build                          install and build only
-# SSC_RANKS sets the MPI ranks of "run" (default: one per core).
+# SSC_RANKS sets the MPI ranks of "run" (default: one per core, or one rank
+# with a thread per core for a scene with a direct factor).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")" && pwd)"
 BUILD="${SSC_BUILD_DIR:-$ROOT/build}"
@@ -56,6 +57,18 @@ build() {
   cmake --build "$BUILD" --target ssc_app -- -j "$JOBS"
 }
 
+# uses_direct_factor FILE.prm: whether FILE or a file it includes sets
+# "Preconditioner = cholesky" (a serial factorisation: one MPI rank)
+uses_direct_factor() {
+  local file="$1" included
+  grep -qiE '^[[:space:]]*set[[:space:]]+Preconditioner[[:space:]]*=[[:space:]]*cholesky' "$file" &&
+    return 0
+  for included in $(sed -nE 's/^[[:space:]]*include[[:space:]]+([^[:space:]#]+).*/\1/p' "$file"); do
+    uses_direct_factor "$(dirname "$file")/$included" && return 0
+  done
+  return 1
+}
+
 # mpirun refuses root unless told; CI runs as root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
@@ -76,7 +89,12 @@ case "${1:-run}" in
     else
       prm="$MAIN_SCENE"
     fi
-    # one MPI rank per core unless SSC_RANKS says otherwise
+    # one MPI rank per core unless SSC_RANKS says otherwise; a scene that
+    # factorises its tangents (Preconditioner = cholesky) runs on one rank,
+    # whose cell loops then take every core as threads
+    if [ -z "${SSC_RANKS:-}" ] && uses_direct_factor "$prm"; then
+      RANKS=1
+    fi
     if [ "$RANKS" -gt 1 ]; then
       mpirun -np "$RANKS" "$BUILD/bin/ssc" "$prm" "$@"
     else
