@@ -62,8 +62,11 @@ def main():
     ax.set_ylim(0, force.max() * 1.05)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="lower right")
+    edge = summary.get("edge_contact", {}).get("edge_radius_mm")
     ax.set_title(f"{summary['run']}: rigid flat punch, radius "
-                 f"{summary['punch_radius_mm']} mm", fontsize=9)
+                 f"{summary['punch_radius_mm']} mm" +
+                 (f", edge rounded at {edge} mm" if edge else ""),
+                 fontsize=9)
     fig.tight_layout()
     fig.savefig(os.path.join(run, "force_depth.png"), dpi=110)
 
@@ -132,7 +135,7 @@ def plot_section(run, summary, force, depth):
         if septa is not None:
             a.plot(septa[0], septa[1], "-", color="c", lw=0.5, alpha=0.8)
         if radius is not None:
-            a.plot([-radius, radius], [-depth, -depth], "r-", lw=3)
+            a.plot(*punch_outline(summary, radius, depth), "r-", lw=2)
         a.set_ylabel("z [mm]")
         a.set_aspect("equal")
     ax[1].set_xlabel("x [mm]")
@@ -140,6 +143,20 @@ def plot_section(run, summary, force, depth):
                     "interfaces, cyan: septa, red: punch)", fontsize=9)
     fig.tight_layout()
     fig.savefig(os.path.join(run, "section.png"), dpi=110)
+
+def punch_outline(summary, radius, depth):
+    """The punch's section at the given depth: its flat face, the rounded
+    edge where the run has one in contact, and its wall up to z = 2 mm."""
+    rho = summary.get("edge_contact", {}).get("edge_radius_mm", 0.)
+    angle = np.linspace(0, np.pi / 2, 12)
+    edge_x = radius - rho + rho * np.sin(angle)
+    edge_z = -depth + rho - rho * np.cos(angle)
+    x = np.concatenate([[-radius, -radius], -edge_x[::-1], edge_x,
+                        [radius, radius]])
+    z = np.concatenate([[2., -depth + rho], edge_z[::-1], edge_z,
+                        [-depth + rho, 2.]])
+    return x, z
+
 
 if __name__ == "__main__":
     main()
