@@ -9,16 +9,19 @@ realisation moves them, and the reference model's set-up reproduced.
     /usr/bin/python3 benchmarks/forearm_finite_strain.py roi
     /usr/bin/python3 benchmarks/forearm_finite_strain.py plot
 
-convergence: the scene at every force with a bonded and a frictionless
-punch face (the rounded edge in frictionless contact in both), Q1 with the
-cell's mean dilatation (Q1-P0) on the scene's mesh and refined once and
-twice towards the punch edge, Q2-P0 and Q2 u-p (Q2-P1, Formulation =
-mixed) on the scene's mesh; lobule seed 1 throughout. The depth
-uncertainty of the scene's discretisation at each force is its distance
-from the finest run that reached that force plus that run's distance from
-the next finest (the reference's own error, bounded by how much the two
-finest discretisations disagree); it is what Punch/Depth uncertainty in
-the scene's prm holds (the script says whether the two agree).
+convergence: the scene (the real indenter: flat face bonded, rounding in
+frictionless contact) at every force, Q1 with the cell's mean dilatation
+(Q1-P0) on o-grids of 8, 12 and 16 cells around (the scene's is 12 around,
+0.2 mm) and Q2 u-p (Q2-P1, Formulation = mixed, the septa with the default
+2 Gauss points per direction) on the 8-around o-grid, and the scene with a
+frictionless face; lobule seed 1 throughout. The depth uncertainty of the
+scene's discretisation at each force is its distance from the finest run
+that reached that force plus that run's distance from the next finest (the
+reference's own error, bounded by how much the two finest discretisations
+disagree); where the finest run did not reach a force, the largest
+relative uncertainty of the forces it reached times the scene's depth
+(extrapolated, and printed as such). It is what Punch/Depth uncertainty
+in the scene's prm holds.
 
 seeds: the scene with lobule seeds 1..N (default 10): mean and standard
 deviation of the depth at each force and of the stiffness.
@@ -34,47 +37,59 @@ square about the punch: Realisation half width = 30) cut at region radii
 the 30 mm region: depth and stiffness against the 30 mm region, and the
 wall time.
 
-Each run is kept in benchmarks/results/forearm_runs/<case>/ (summary and
-force-displacement table only) and not repeated; delete a folder to rerun.
-Writes benchmarks/results/forearm_convergence.csv, forearm_seeds.csv,
-forearm_herlin.csv, forearm_roi.csv and forearm_convergence.png. 2 MPI ranks.
+Each run is kept in benchmarks/results/forearm_runs_real_indenter/<case>/
+(summary and force-displacement table only) and not repeated; delete a
+folder to rerun. (forearm_runs/ keeps the runs of the earlier scene: box
+mesh, the whole face bonded.) Writes benchmarks/results/
+forearm_convergence.csv, forearm_seeds.csv, forearm_herlin.csv,
+forearm_roi.csv and forearm_convergence.png. One MPI rank (the scene
+factorises its tangents), its cell loops on every core.
 """
-import csv, json, os, shutil, statistics, subprocess, sys, tempfile
+import csv, json, os, re, shutil, statistics, subprocess, sys, tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SSC = os.path.join(ROOT, "build", "bin", "ssc")
 SCENE = os.path.join(ROOT, "prm", "forearm_indentation.prm")
 HERLIN = os.path.join(ROOT, "prm", "forearm_indentation_herlin2014.prm")
 OUT = os.path.join(ROOT, "benchmarks", "results")
-RUNS = os.path.join(OUT, "forearm_runs")
-RANKS = 2
+RUNS = os.path.join(OUT, "forearm_runs_real_indenter")
+RANKS = 1
 BASE = {"Run/Write fields": "false", "Punch/Section": "false",
         "Punch/Profile length": "0"}
-LR = "Mesh/Region of interest/Local refinements"
 Q1 = {"Elasticity/Degree": "1", "Elasticity/Formulation": "mean dilatation"}
-Q2P0 = {"Elasticity/Degree": "2",
-        "Elasticity/Formulation": "mean dilatation"}
-Q2P1 = {"Elasticity/Degree": "2", "Elasticity/Formulation": "mixed"}
-# (contact, discretisation, overrides, levels), coarse to fine; the last
-# entries of each contact are the finest
+Q2P1 = {"Elasticity/Degree": "2", "Elasticity/Formulation": "mixed",
+        "Embedded/Septa/Quadrature points": "2"}
+
+
+def ogrid(around, edge, grading):
+    """The o-grid's cells around, radial size at the circle, grading."""
+    return {"Mesh/O-grid/Cells around": str(around),
+            "Mesh/O-grid/Edge cell size": str(edge),
+            "Mesh/O-grid/Radial grading": str(grading)}
+
+
+# (contact, discretisation, mesh label, overrides), coarse to fine
 CONVERGENCE = [
-    ("bonded", "Q1-P0", Q1, [0, 1, 2]),
-    ("bonded", "Q2-P0", Q2P0, [0]),
-    ("bonded", "Q2-P1", Q2P1, [0]),
-    # frictionless: Q1-P0 only so far (Q2 with a frictionless face crawled
-    # in the hard cases, benchmarks/README.md)
-    ("frictionless", "Q1-P0", Q1, [0, 1]),
+    ("bonded", "Q1-P0", "n8 h0.3", {**Q1, **ogrid(8, 0.3, 1.6)}),
+    ("bonded", "Q1-P0", "n12 h0.2", {**Q1, **ogrid(12, 0.2, 1.4)}),
+    ("bonded", "Q1-P0", "n12 h0.15", {**Q1, **ogrid(12, 0.15, 1.3)}),
+    ("bonded", "Q1-P0", "n16 h0.15", {**Q1, **ogrid(16, 0.15, 1.3)}),
+    ("bonded", "Q2-P1", "n8 h0.3", {**Q2P1, **ogrid(8, 0.3, 1.6)}),
+    # a frictionless face (the rounding in contact as before): no Q2
+    # reference (Q2 with a frictionless face crawled, benchmarks/README.md)
+    ("frictionless", "Q1-P0", "n12 h0.2", {**Q1, **ogrid(12, 0.2, 1.4)}),
 ]
 # the scene's discretisation
-SCENE_CASE = ("Q1-P0", 0)
+SCENE_CASE = ("Q1-P0", "n12 h0.2")
 # the reference model's set-up (Herlin et al. 2014): a regular 2 mm grid of
 # hexahedra (no mesh line on the punch's circle), Q1 displacement,
 # corotational, nu 0.49, its moduli; the rounded punch edge in contact as
 # in the scene
 HERLIN_SETUP = {"Elasticity/Degree": "1",
                 "Elasticity/Formulation": "displacement",
+                "Mesh/Layout": "box", "Punch/Tied region": "whole face",
                 "Mesh/Cell size": "2", "Mesh/Core half width": "30",
-                "Mesh/Fitted circle radius": "0", LR: "0"}
+                "Mesh/Fitted circle radius": "0"}
 for layer in ["skin", "SAT", "SM", "DAT", "deep"]:
     HERLIN_SETUP[f"Layer stack/{layer}/Material model"] = "corotational"
 
@@ -83,7 +98,8 @@ def run(prm, name, overrides):
     """Runs ssc once (or reads the kept result): summary and steps."""
     folder = os.path.join(RUNS, name)
     summary_file = os.path.join(folder, "summary.json")
-    if not os.path.exists(summary_file):
+    if not os.path.exists(summary_file) and \
+            not os.path.exists(os.path.join(folder, "log.txt")):
         with tempfile.TemporaryDirectory() as tmp:
             args = ["mpirun", "-np", str(RANKS), SSC, prm,
                     "-s", f"Run/Output directory={tmp}",
@@ -105,9 +121,34 @@ def run(prm, name, overrides):
             for f in ["summary.json", "force_displacement.csv"]:
                 shutil.copy(os.path.join(tmp, "run", f), folder)
     if not os.path.exists(summary_file):
-        return None
+        return stopped_run(folder)
     with open(summary_file) as f:
         return json.load(f)
+
+
+def stopped_run(folder):
+    """What a run that stopped short (failed, or stopped by hand in a
+    crawl; its ssc output kept as log.txt) reached: the DoFs and the load
+    steps it finished, from its progress lines (None if it reached none)."""
+    log = os.path.join(folder, "log.txt")
+    if not os.path.exists(log):
+        return None
+    dofs, forces, depths, newton = None, [], [], 0
+    step = re.compile(r"Load step \d+ of \d+: force ([-\d.e+]+) N, depth "
+                      r"([-\d.e+]+) mm \(.*?(\d+) Newton iterations")
+    for line in open(log):
+        if line.startswith("Degrees of freedom:"):
+            dofs = int(line.split(":")[1].split()[0])
+        m = step.search(line)
+        if m:
+            forces.append(float(m.group(1)))
+            depths.append(float(m.group(2)))
+            newton += int(m.group(3))
+    if not forces:
+        return None
+    return {"dofs": dofs, "force_N": forces, "depth_mm": depths,
+            "timings": {"total": None}, "solver": {"newton_iterations": newton},
+            "stopped_short": True}
 
 
 def depths_at(summary, forces):
@@ -130,7 +171,7 @@ def result_columns(summary, forces):
     """The columns every table shares: wall time and the depth per force
     (empty where the run failed or stopped short)."""
     columns = {"wall_time_s": round(summary["timings"]["total"], 1)
-               if summary else ""}
+               if summary and summary["timings"]["total"] else ""}
     for f, d in zip(forces, depths_at(summary, forces)):
         columns[f"depth_mm_at_{f}N"] = "" if d is None else d
     return columns
@@ -147,22 +188,19 @@ def write_csv(path, fields, rows):
 def convergence():
     forces = scene_forces()
     rows = []
-    for contact, label, overrides, levels in CONVERGENCE:
-        for level in levels:
-            name = f"{contact}_{label}_lr{level}"
-            s = run(SCENE, name, {**overrides, LR: str(level),
-                                  "Punch/Contact": contact})
-            row = {"contact": contact, "discretisation": label,
-                   "level": level,
-                   "dofs": s["dofs"] if s else "",
-                   "wall_time_s": round(s["timings"]["total"], 1)
-                   if s else "",
-                   "newton_iterations": s["solver"]["newton_iterations"]
-                   if s and "newton_iterations" in s["solver"] else ""}
-            for f, d in zip(forces, depths_at(s, forces)):
-                row[f"depth_mm_at_{f}N"] = "" if d is None else d
-            rows.append(row)
-    fields = ["contact", "discretisation", "level", "dofs", "wall_time_s",
+    for contact, label, mesh, overrides in CONVERGENCE:
+        name = f"{contact}_{label}_{mesh.replace(' ', '_')}"
+        s = run(SCENE, name, {**overrides, "Punch/Contact": contact})
+        row = {"contact": contact, "discretisation": label, "mesh": mesh,
+               "dofs": s["dofs"] if s else "",
+               "wall_time_s": round(s["timings"]["total"], 1)
+               if s and s["timings"]["total"] else "",
+               "newton_iterations": s["solver"]["newton_iterations"]
+               if s and "newton_iterations" in s["solver"] else ""}
+        for f, d in zip(forces, depths_at(s, forces)):
+            row[f"depth_mm_at_{f}N"] = "" if d is None else d
+        rows.append(row)
+    fields = ["contact", "discretisation", "mesh", "dofs", "wall_time_s",
               "newton_iterations"] + [f"depth_mm_at_{f}N" for f in forces]
     write_csv(os.path.join(OUT, "forearm_convergence.csv"), fields, rows)
     for contact in sorted({c[0] for c in CONVERGENCE}):
@@ -171,27 +209,41 @@ def convergence():
 
 
 def uncertainty(contact, forces, rows):
-    """Prints the scene discretisation's depth uncertainty per force."""
-    scene = [r for r in rows if (r["discretisation"], r["level"]) ==
+    """Prints the scene discretisation's depth uncertainty per force: the
+    finest run is the Q2-P1 one where there is one (most accurate per DoF),
+    the next finest the Q1-P0 run with the most DoFs."""
+    scene = [r for r in rows if (r["discretisation"], r["mesh"]) ==
              SCENE_CASE][0]
-    # finest first: most DoFs
     ranked = sorted([r for r in rows if r["dofs"] != ""],
-                    key=lambda r: -r["dofs"])
+                    key=lambda r: (r["discretisation"] == "Q2-P1",
+                                   r["dofs"]), reverse=True)
     values = []
     for f in forces:
         key = f"depth_mm_at_{f}N"
         reached = [r for r in ranked if r[key] != ""]
-        if scene[key] == "" or len(reached) < 2 or reached[0] is scene:
+        if scene[key] == "" or len(reached) < 2 or reached[0] is scene or \
+                reached[0] is not ranked[0]:
             values.append(None)
             continue
         best, second = reached[0], reached[1]
         values.append(abs(scene[key] - best[key]) +
                       abs(best[key] - second[key]))
         print(f"{contact} {f} N: scene {scene[key]:.3f} mm, finest "
-              f"{best['discretisation']} lr{best['level']} "
-              f"{best[key]:.3f} mm, next {second['discretisation']} "
-              f"lr{second['level']} {second[key]:.3f} mm -> "
-              f"+-{values[-1]:.3f} mm")
+              f"{best['discretisation']} {best['mesh']} {best[key]:.3f} mm, "
+              f"next {second['discretisation']} {second['mesh']} "
+              f"{second[key]:.3f} mm -> +-{values[-1]:.3f} mm")
+    # where the finest run did not reach a force, the largest relative
+    # uncertainty of the forces it reached, times the scene's depth
+    # (extrapolated, and said so)
+    relative = [v / scene[f"depth_mm_at_{f}N"]
+                for f, v in zip(forces, values) if v is not None]
+    for i, f in enumerate(forces):
+        depth = scene[f"depth_mm_at_{f}N"]
+        if values[i] is None and relative and depth != "":
+            values[i] = max(relative) * depth
+            print(f"{contact} {f} N: scene {depth:.3f} mm, the finest run "
+                  f"did not reach it -> +-{values[i]:.3f} mm "
+                  f"(extrapolated: {max(relative):.1%} of the depth)")
     print(f"{contact}: Depth uncertainty = " +
           ", ".join("?" if v is None else f"{v:.2f}" for v in values))
 
@@ -283,29 +335,43 @@ def plot():
     import matplotlib.pyplot as plt
     with open(os.path.join(OUT, "forearm_convergence.csv")) as f:
         rows = list(csv.DictReader(f))
-    forces = [float(k[len("depth_mm_at_"):-1]) for k in rows[0]
-              if k.startswith("depth_mm_at_")]
+    uncertainty = scene_uncertainty()
+    forces = scene_forces()
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
     for ax, contact in zip(axes, ["bonded", "frictionless"]):
-        for label, marker in [("Q1-P0", "o-"), ("Q2-P0", "s"),
-                              ("Q2-P1", "D")]:
-            sel = [r for r in rows if r["contact"] == contact and
-                   r["discretisation"] == label and r["dofs"]]
-            for f in [0.35, 1.0, 1.8]:
-                key = f"depth_mm_at_{f}N"
-                pts = [(float(r["dofs"]), float(r[key])) for r in sel
-                       if r[key]]
+        for f, colour in [(0.35, "tab:blue"), (1.0, "tab:orange"),
+                          (1.5, "tab:green"), (1.8, "tab:red")]:
+            key = f"depth_mm_at_{f}N"
+            for label, marker in [("Q1-P0", "o-"), ("Q2-P1", "D")]:
+                pts = [(float(r["dofs"]), float(r[key])) for r in rows
+                       if r["contact"] == contact and r[key] and
+                       r["discretisation"] == label]
                 if pts:
-                    ax.semilogx(*zip(*pts), marker,
+                    ax.semilogx(*zip(*sorted(pts)), marker, color=colour,
                                 label=f"{label}, {f} N")
+            scene = [r for r in rows if r["contact"] == contact and
+                     (r["discretisation"], r["mesh"]) == SCENE_CASE]
+            if contact == "bonded" and scene and scene[0][key]:
+                ax.errorbar(float(scene[0]["dofs"]), float(scene[0][key]),
+                            yerr=uncertainty[forces.index(f)], color=colour,
+                            capsize=4, lw=1)
         ax.set_xlabel("DoFs")
-        ax.set_title(f"{contact} punch face", fontsize=9)
+        ax.set_title(f"the real indenter, {contact} flat face (scene: Q1-P0 "
+                     f"{SCENE_CASE[1]}, with its error bar)", fontsize=9)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, ncol=2)
     axes[0].set_ylabel("depth [mm]")
     fig.tight_layout()
     fig.savefig(os.path.join(OUT, "forearm_convergence.png"), dpi=110)
     print("wrote benchmarks/results/forearm_convergence.png")
+
+
+def scene_uncertainty():
+    """Punch/Depth uncertainty of the scene's prm."""
+    for line in open(SCENE):
+        if line.strip().startswith("set Depth uncertainty"):
+            return [float(v) for v in line.split("=")[1].split(",")]
+    raise RuntimeError("no Punch/Depth uncertainty in " + SCENE)
 
 
 if __name__ == "__main__":
