@@ -1,0 +1,104 @@
+#!/usr/bin/python3
+"""What the main scene's two speed settings buy, measured side by side: the
+scene (prm/forearm_indentation.prm) to its first three forces (0.35, 0.5,
+0.75 N) on one MPI rank with
+
+- the cell loops on one thread or on two (DEAL_II_NUM_THREADS; ssc's
+  default is every core not taken by an MPI rank), and
+- the septa integrated with 2 Gauss points per direction on each piece in
+  a cell (the default) or with 1 (the scene's choice).
+
+Each configuration runs REPEATS times, the configurations alternating, so
+that the shared machine's load falls on all of them alike. Writes
+benchmarks/results/scene_speed.csv (wall, assembly and solve seconds,
+Newton iterations, depths) and scene_speed.png.
+
+    /usr/bin/python3 benchmarks/scene_speed.py [--plot-only]
+"""
+import csv, json, os, subprocess, sys, tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SSC = os.path.join(ROOT, "build", "bin", "ssc")
+SCENE = os.path.join(ROOT, "prm", "forearm_indentation.prm")
+OUT = os.path.join(ROOT, "benchmarks", "results")
+CSV = os.path.join(OUT, "scene_speed.csv")
+FORCES = "0.35, 0.5, 0.75"
+REPEATS = 2
+# (label, threads, septa Gauss points per direction)
+CONFIGURATIONS = [("1 thread, septa 2 points", 1, 2),
+                  ("1 thread, septa 1 point", 1, 1),
+                  ("2 threads, septa 2 points", 2, 2),
+                  ("2 threads, septa 1 point (scene)", 2, 1)]
+
+
+def run(threads, septa_points):
+    with tempfile.TemporaryDirectory() as tmp:
+        args = [SSC, SCENE, "-s", f"Run/Output directory={tmp}",
+                "-s", "Run/Name=run", "-s", "Run/Write fields=false",
+                "-s", "Punch/Section=false", "-s", "Punch/Profile length=0",
+                "-s", f"Punch/Forces={FORCES}",
+                "-s", "Punch/Depth uncertainty=",
+                "-s", f"Embedded/Septa/Quadrature points={septa_points}"]
+        env = dict(os.environ, DEAL_II_NUM_THREADS=str(threads))
+        result = subprocess.run(args, env=env, capture_output=True,
+                                text=True)
+        if result.returncode != 0:
+            sys.exit(result.stdout + result.stderr)
+        with open(os.path.join(tmp, "run", "summary.json")) as f:
+            return json.load(f)
+
+
+def measure():
+    rows = []
+    for repeat in range(REPEATS):
+        for label, threads, points in CONFIGURATIONS:
+            s = run(threads, points)
+            t = s["timings"]
+            row = {"configuration": label, "repeat": repeat + 1,
+                   "threads": threads, "septa_points": points,
+                   "wall_s": round(t["total"], 2),
+                   "assembly_s": round(t["assembly"], 2),
+                   "solve_s": round(t["solve"], 2),
+                   "newton_iterations": s["solver"]["newton_iterations"],
+                   "septa_quadrature_points":
+                       s["embedded"]["septa_quadrature_points"]}
+            for f, d in zip(s["force_N"], s["depth_mm"]):
+                row[f"depth_mm_at_{f:g}N"] = d
+            rows.append(row)
+            print(", ".join(f"{k} {v}" for k, v in row.items()), flush=True)
+    with open(CSV, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    print("wrote", os.path.relpath(CSV, ROOT))
+
+
+def plot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    with open(CSV) as f:
+        rows = list(csv.DictReader(f))
+    labels = [c[0] for c in CONFIGURATIONS]
+    fig, ax = plt.subplots(figsize=(7, 3.5))
+    for i, label in enumerate(labels):
+        runs = [r for r in rows if r["configuration"] == label]
+        for j, r in enumerate(runs):
+            y = i + 0.35 * (j - (len(runs) - 1) / 2)
+            ax.barh(y, float(r["assembly_s"]), 0.3, color="tab:blue",
+                    label="assembly" if i == j == 0 else None)
+            ax.barh(y, float(r["solve_s"]), 0.3, left=float(r["assembly_s"]),
+                    color="tab:orange", label="solve" if i == j == 0 else None)
+    ax.set_yticks(range(len(labels)), labels, fontsize=8)
+    ax.set_xlabel("wall time [s], scene to 0.75 N, one MPI rank")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, axis="x")
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "scene_speed.png"), dpi=110)
+    print("wrote benchmarks/results/scene_speed.png")
+
+
+if __name__ == "__main__":
+    if "--plot-only" not in sys.argv:
+        measure()
+    plot()
