@@ -40,8 +40,10 @@ def main():
     fig, ax = plt.subplots(figsize=(6, 4.5))
     label = (f"ssc ({summary['contact']}, "
              f"k = {summary['stiffness_N_per_mm']:.4f} N/mm)")
+    reach = depth.max()
     if "depth_uncertainty_mm" in summary:
         error = np.array(summary["depth_uncertainty_mm"], dtype=float)
+        reach = (depth + error).max()
         ax.errorbar(depth, force, xerr=error, fmt="o-", capsize=3,
                     label=label + ", discretisation error")
     else:
@@ -58,7 +60,7 @@ def main():
                                    "(force/displacement, other device)")
     ax.set_xlabel("depth [mm]")
     ax.set_ylabel("force [N]")
-    ax.set_xlim(0, depth.max() * 1.05)
+    ax.set_xlim(0, reach * 1.05)
     ax.set_ylim(0, force.max() * 1.05)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="lower right")
