@@ -112,12 +112,13 @@ def run(prm, name, overrides):
             result = subprocess.run(args, env=env, capture_output=True,
                                     text=True)
             os.makedirs(folder, exist_ok=True)
-            with open(os.path.join(folder, "log.txt"), "w") as f:
-                f.write(result.stdout + result.stderr)
             if result.returncode != 0:
+                # kept: the load steps it finished still count
+                with open(os.path.join(folder, "log.txt"), "w") as f:
+                    f.write(result.stdout + result.stderr)
                 print(f"  {name} failed (exit {result.returncode}); "
                       f"log in {folder}", flush=True)
-                return None
+                return stopped_run(folder)
             for f in ["summary.json", "force_displacement.csv"]:
                 shutil.copy(os.path.join(tmp, "run", f), folder)
     if not os.path.exists(summary_file):
