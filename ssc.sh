@@ -10,8 +10,8 @@
 #   ./ssc.sh format-check                   every C++ file formatted with
 #                                           the deal.II .clang-format?
 #   ./ssc.sh build                          install and build only
-# SSC_RANKS sets the MPI ranks of "run" (default: one per core, or one rank
-# with a thread per core for a scene with a direct factor).
+# SSC_RANKS sets the MPI ranks of "run" (default: one per core, or one for
+# a scene with a direct factor).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")" && pwd)"
 BUILD="${SSC_BUILD_DIR:-$ROOT/build}"
@@ -90,8 +90,7 @@ case "${1:-run}" in
       prm="$MAIN_SCENE"
     fi
     # one MPI rank per core unless SSC_RANKS says otherwise; a scene that
-    # factorises its tangents (Preconditioner = cholesky) runs on one rank,
-    # whose cell loops then take every core as threads
+    # factorises its tangents (Preconditioner = cholesky) runs on one rank
     if [ -z "${SSC_RANKS:-}" ] && uses_direct_factor "$prm"; then
       RANKS=1
     fi

@@ -1,17 +1,12 @@
 #!/usr/bin/python3
-"""What the main scene's two speed settings buy, measured side by side: the
+"""What the main scene's septum quadrature buys, measured side by side: the
 scene (prm/forearm_indentation.prm) to its first three forces (0.35, 0.5,
-0.75 N) on one MPI rank with
-
-- the cell loops on one thread or on two (DEAL_II_NUM_THREADS; ssc's
-  default is every core not taken by an MPI rank), and
-- the septa integrated with 2 Gauss points per direction on each piece in
-  a cell (the default) or with 1 (the scene's choice).
-
-Each configuration runs REPEATS times, the configurations alternating, so
-that the shared machine's load falls on all of them alike. Writes
-benchmarks/results/scene_speed.csv (wall, assembly and solve seconds,
-Newton iterations, depths) and scene_speed.png.
+0.75 N) on one MPI rank with the septa integrated with 2 Gauss points per
+direction on each piece in a cell (the default) or with 1 (the scene's
+choice). Each configuration runs REPEATS times, the configurations
+alternating, so that the shared machine's load falls on all of them
+alike. Writes benchmarks/results/scene_speed.csv (wall, assembly and solve
+seconds, Newton iterations, depths) and scene_speed.png.
 
     /usr/bin/python3 benchmarks/scene_speed.py [--plot-only]
 """
@@ -23,15 +18,13 @@ SCENE = os.path.join(ROOT, "prm", "forearm_indentation.prm")
 OUT = os.path.join(ROOT, "benchmarks", "results")
 CSV = os.path.join(OUT, "scene_speed.csv")
 FORCES = "0.35, 0.5, 0.75"
-REPEATS = 2
-# (label, threads, septa Gauss points per direction)
-CONFIGURATIONS = [("1 thread, septa 2 points", 1, 2),
-                  ("1 thread, septa 1 point", 1, 1),
-                  ("2 threads, septa 2 points", 2, 2),
-                  ("2 threads, septa 1 point (scene)", 2, 1)]
+REPEATS = 3
+# (label, septa Gauss points per direction)
+CONFIGURATIONS = [("septa 2 points (default)", 2),
+                  ("septa 1 point (scene)", 1)]
 
 
-def run(threads, septa_points):
+def run(septa_points):
     with tempfile.TemporaryDirectory() as tmp:
         args = [SSC, SCENE, "-s", f"Run/Output directory={tmp}",
                 "-s", "Run/Name=run", "-s", "Run/Write fields=false",
@@ -39,9 +32,7 @@ def run(threads, septa_points):
                 "-s", f"Punch/Forces={FORCES}",
                 "-s", "Punch/Depth uncertainty=",
                 "-s", f"Embedded/Septa/Quadrature points={septa_points}"]
-        env = dict(os.environ, DEAL_II_NUM_THREADS=str(threads))
-        result = subprocess.run(args, env=env, capture_output=True,
-                                text=True)
+        result = subprocess.run(args, capture_output=True, text=True)
         if result.returncode != 0:
             sys.exit(result.stdout + result.stderr)
         with open(os.path.join(tmp, "run", "summary.json")) as f:
@@ -51,11 +42,11 @@ def run(threads, septa_points):
 def measure():
     rows = []
     for repeat in range(REPEATS):
-        for label, threads, points in CONFIGURATIONS:
-            s = run(threads, points)
+        for label, points in CONFIGURATIONS:
+            s = run(points)
             t = s["timings"]
             row = {"configuration": label, "repeat": repeat + 1,
-                   "threads": threads, "septa_points": points,
+                   "septa_points": points,
                    "wall_s": round(t["total"], 2),
                    "assembly_s": round(t["assembly"], 2),
                    "solve_s": round(t["solve"], 2),
