@@ -167,11 +167,16 @@ def depths_at(summary, forces):
     return [reached.get(round(f, 6)) for f in forces]
 
 
-def scene_forces():
+def scene_list(name):
+    """The list of numbers the scene's prm sets for Punch/@p name."""
     for line in open(SCENE):
-        if line.strip().startswith("set Forces"):
+        if line.strip().startswith(f"set {name} "):
             return [float(v) for v in line.split("=")[1].split(",")]
-    raise RuntimeError("no Punch/Forces in " + SCENE)
+    raise RuntimeError(f"no Punch/{name} in " + SCENE)
+
+
+def scene_forces():
+    return scene_list("Forces")
 
 
 def result_columns(summary, forces):
@@ -198,15 +203,11 @@ def convergence():
     for contact, label, mesh, overrides in CONVERGENCE:
         name = f"{contact}_{label}_{mesh.replace(' ', '_')}"
         s = run(SCENE, name, {**overrides, "Punch/Contact": contact})
-        row = {"contact": contact, "discretisation": label, "mesh": mesh,
-               "dofs": s["dofs"] if s else "",
-               "wall_time_s": round(s["timings"]["total"], 1)
-               if s and s["timings"]["total"] else "",
-               "newton_iterations": s["solver"]["newton_iterations"]
-               if s and "newton_iterations" in s["solver"] else ""}
-        for f, d in zip(forces, depths_at(s, forces)):
-            row[f"depth_mm_at_{f}N"] = "" if d is None else d
-        rows.append(row)
+        rows.append({"contact": contact, "discretisation": label,
+                     "mesh": mesh, "dofs": s["dofs"] if s else "",
+                     "newton_iterations": s["solver"]["newton_iterations"]
+                     if s and "newton_iterations" in s["solver"] else "",
+                     **result_columns(s, forces)})
     fields = ["contact", "discretisation", "mesh", "dofs", "wall_time_s",
               "newton_iterations"] + [f"depth_mm_at_{f}N" for f in forces]
     write_csv(os.path.join(OUT, "forearm_convergence.csv"), fields, rows)
@@ -342,7 +343,7 @@ def plot():
     import matplotlib.pyplot as plt
     with open(os.path.join(OUT, "forearm_convergence.csv")) as f:
         rows = list(csv.DictReader(f))
-    uncertainty = scene_uncertainty()
+    uncertainty = scene_list("Depth uncertainty")
     forces = scene_forces()
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
     for ax, contact in zip(axes, ["bonded", "frictionless"]):
@@ -371,14 +372,6 @@ def plot():
     fig.tight_layout()
     fig.savefig(os.path.join(OUT, "forearm_convergence.png"), dpi=110)
     print("wrote benchmarks/results/forearm_convergence.png")
-
-
-def scene_uncertainty():
-    """Punch/Depth uncertainty of the scene's prm."""
-    for line in open(SCENE):
-        if line.strip().startswith("set Depth uncertainty"):
-            return [float(v) for v in line.split("=")[1].split(",")]
-    raise RuntimeError("no Punch/Depth uncertainty in " + SCENE)
 
 
 if __name__ == "__main__":

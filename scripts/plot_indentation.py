@@ -146,6 +146,7 @@ def plot_section(run, summary, force, depth):
     fig.tight_layout()
     fig.savefig(os.path.join(run, "section.png"), dpi=110)
 
+
 def punch_outline(summary, radius, depth):
     """The punch's section at the given depth: its flat face, the rounded
     edge where the run has one in contact, and its wall up to z = 2 mm."""
