@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include <ssc/mechanics/cell_matrix_product.h>
 #include <ssc/mechanics/cell_pressure_block.h>
 
 namespace ssc
@@ -22,9 +23,9 @@ namespace ssc
 
     // K_0 += gamma B^T M^{-1} B
     FullMatrix<double> M_inverse_B(n_p, n);
-    mass_inverse.mmult(M_inverse_B, coupling);
+    multiply(M_inverse_B, mass_inverse, coupling);
     FullMatrix<double> volumetric(n, n);
-    coupling.Tmmult(volumetric, M_inverse_B);
+    multiply(volumetric, coupling, M_inverse_B, Transposed::left);
     reduced.add(gamma, volumetric);
     // C = (C^{-1} - gamma M^{-1})^{-1}
     C_inverse.add(-gamma, mass_inverse);

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include <ssc/mechanics/cell_matrix_product.h>
 #include <ssc/mechanics/finite_strain_kernel.h>
 #include <ssc/mechanics/pressure_basis.h>
 
@@ -115,9 +116,9 @@ namespace ssc
         projection.mass_inverse.vmult(projection.pressure, pressure_moments);
         // M^{-1} H M^{-1}
         FullMatrix<double> H_M_inverse(n_p, n_p);
-        H.mmult(H_M_inverse, projection.mass_inverse);
+        multiply(H_M_inverse, H, projection.mass_inverse);
         projection.stiffness.reinit(n_p, n_p);
-        projection.mass_inverse.mmult(projection.stiffness, H_M_inverse);
+        multiply(projection.stiffness, projection.mass_inverse, H_M_inverse);
       }
 
     cell_matrix   = 0;
@@ -212,9 +213,9 @@ namespace ssc
         block->coupling = B;
         FullMatrix<double> H_inverse(n_p, n_p), H_inverse_M(n_p, n_p);
         H_inverse.invert(projection.volumetric);
-        H_inverse.mmult(H_inverse_M, projection.mass);
+        multiply(H_inverse_M, H_inverse, projection.mass);
         block->pressure.reinit(n_p, n_p);
-        projection.mass.mmult(block->pressure, H_inverse_M);
+        multiply(block->pressure, projection.mass, H_inverse_M);
         block->pressure *= 1. / (1. - beta);
         block->mass          = projection.mass;
         block->shear_modulus = material.moduli().shear_modulus;
@@ -223,7 +224,7 @@ namespace ssc
       {
         // (1 - beta) B^T M^{-1} H M^{-1} B
         FullMatrix<double> SB(n_p, n);
-        projection.stiffness.mmult(SB, B);
+        multiply(SB, projection.stiffness, B);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             {

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include <ssc/mechanics/cell_matrix_product.h>
 #include <ssc/mechanics/pressure_basis.h>
 #include <ssc/mechanics/small_strain_kernel.h>
 
@@ -71,9 +72,9 @@ namespace ssc
             matrix(i, j);
       K_aa.gauss_jordan();
       FullMatrix<double> K_aa_inv_K_au(n_a, n_dofs);
-      K_aa.mTmult(K_aa_inv_K_au, K_ua);
+      multiply(K_aa_inv_K_au, K_aa, K_ua, Transposed::right);
       FullMatrix<double> correction(n_dofs, n_dofs);
-      K_ua.mmult(correction, K_aa_inv_K_au);
+      multiply(correction, K_ua, K_aa_inv_K_au);
       for (unsigned int i = 0; i < n_dofs; ++i)
         for (unsigned int j = 0; j < n_dofs; ++j)
           cell_matrix(i, j) = matrix(i, j) - correction(i, j);
@@ -136,7 +137,7 @@ namespace ssc
             }
           K_aa.gauss_jordan();
           FullMatrix<double> G(n_a, n_dofs + n_p);
-          K_aa.mmult(G, rhs);
+          multiply(G, K_aa, rhs);
           for (unsigned int a = 0; a < n_a; ++a)
             {
               for (unsigned int i = 0; i < n_dofs; ++i)
@@ -290,9 +291,9 @@ namespace ssc
         // kappa B^T M^{-1} B: the bulk modulus on the projected divergence
         mass.gauss_jordan();
         FullMatrix<double> m_inv_b(n_p, n_modes);
-        mass.mmult(m_inv_b, coupling);
+        multiply(m_inv_b, mass, coupling);
         FullMatrix<double> volumetric(n_modes, n_modes);
-        coupling.Tmmult(volumetric, m_inv_b);
+        multiply(volumetric, coupling, m_inv_b, Transposed::left);
         matrix.add(kappa, volumetric);
         for (unsigned int i = 0; i < n_modes; ++i)
           for (unsigned int a = 0; a < n_p; ++a)
