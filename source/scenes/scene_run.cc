@@ -1,5 +1,6 @@
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
@@ -108,11 +109,13 @@ namespace ssc
                             {"ligament_segments", 0},
                             {"lobules", 0}};
     summary["mpi_ranks"] = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    summary["solver"]    = {{"linear_iterations", 0},
-                            {"linear_iterations_per_step",
-                             nlohmann::ordered_json::array()},
-                            {"newton_iterations", 0}};
-    summary["timings"]   = timings;
+    // the cell loops' threads on each rank (the cores no rank takes)
+    summary["threads_per_rank"] = MultithreadInfo::n_threads();
+    summary["solver"]           = {{"linear_iterations", 0},
+                                   {"linear_iterations_per_step",
+                                    nlohmann::ordered_json::array()},
+                                   {"newton_iterations", 0}};
+    summary["timings"]          = timings;
     summary["memory_MB"] =
       Utilities::MPI::sum(resident_memory_MB(true), mpi_communicator);
     summary["memory_at_start_MB"] = memory_at_start_MB;
