@@ -44,28 +44,33 @@ main(int argc, char **argv)
                            coupling  = filled(4, 81, 0.2),
                            stiffness = filled(81, 81, 0.3);
 
-  FullMatrix<double> ours(4, 81), theirs(4, 81);
-  ssc::multiply(ours, pressure, coupling);
-  pressure.mmult(theirs, coupling);
-  deallog << "A B   against mmult:  "
-          << (relative_difference(ours, theirs) < 1e-14 ? "equal" : "differ")
-          << std::endl;
-
-  FullMatrix<double> ours_t(81, 81), theirs_t(81, 81);
-  ssc::multiply(ours_t, coupling, ours, ssc::Transposed::left);
-  coupling.Tmmult(theirs_t, ours);
-  deallog << "A^T B against Tmmult: "
-          << (relative_difference(ours_t, theirs_t) < 1e-14 ? "equal" :
-                                                              "differ")
-          << std::endl;
-
-  FullMatrix<double> ours_r(4, 81), theirs_r(4, 81);
-  ssc::multiply(ours_r, coupling, stiffness, ssc::Transposed::right);
-  coupling.mTmult(theirs_r, stiffness);
-  deallog << "A B^T against mTmult: "
-          << (relative_difference(ours_r, theirs_r) < 1e-14 ? "equal" :
-                                                              "differ")
-          << std::endl;
+  // ssc::multiply against deal.II's product of the same kind
+  const auto compare = [](const std::string        &label,
+                          const FullMatrix<double> &left,
+                          const FullMatrix<double> &right,
+                          const ssc::Transposed     transposed) {
+    const bool left_t  = transposed == ssc::Transposed::left,
+               right_t = transposed == ssc::Transposed::right;
+    FullMatrix<double> ours(left_t ? left.n() : left.m(),
+                            right_t ? right.m() : right.n());
+    FullMatrix<double> theirs(ours.m(), ours.n());
+    ssc::multiply(ours, left, right, transposed);
+    if (left_t)
+      left.Tmmult(theirs, right);
+    else if (right_t)
+      left.mTmult(theirs, right);
+    else
+      left.mmult(theirs, right);
+    deallog << label << ": "
+            << (relative_difference(ours, theirs) < 1e-14 ? "equal" : "differ")
+            << std::endl;
+    return ours;
+  };
+  const FullMatrix<double> ours =
+    compare("A B   against mmult ", pressure, coupling, ssc::Transposed::none);
+  const FullMatrix<double> ours_t =
+    compare("A^T B against Tmmult", coupling, ours, ssc::Transposed::left);
+  compare("A B^T against mTmult", coupling, stiffness, ssc::Transposed::right);
 
   // eight products at once on threads: each must equal the serial one
   MultithreadInfo::set_thread_limit(2);
