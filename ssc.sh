@@ -11,7 +11,8 @@
 #                                           the deal.II .clang-format?
 #   ./ssc.sh build                          install and build only
 # SSC_RANKS sets the MPI ranks of "run" (default: one per core, or one for
-# a scene with a direct factor).
+# a scene with a direct factor, whose cell loops then take every core as
+# threads; DEAL_II_NUM_THREADS limits them).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")" && pwd)"
 BUILD="${SSC_BUILD_DIR:-$ROOT/build}"
@@ -90,7 +91,8 @@ case "${1:-run}" in
       prm="$MAIN_SCENE"
     fi
     # one MPI rank per core unless SSC_RANKS says otherwise; a scene that
-    # factorises its tangents (Preconditioner = cholesky) runs on one rank
+    # factorises its tangents (Preconditioner = cholesky) runs on one rank,
+    # its cell loops on threads on the cores the ranks leave free
     if [ -z "${SSC_RANKS:-}" ] && uses_direct_factor "$prm"; then
       RANKS=1
     fi

@@ -1,9 +1,11 @@
 #!/usr/bin/python3
-"""What the main scene's septum quadrature buys, measured side by side: the
-scene (prm/forearm_indentation.prm) to its first three forces (0.35, 0.5,
-0.75 N) on one MPI rank with the septa integrated with 2 Gauss points per
-direction on each piece in a cell (the default) or with 1 (the scene's
-choice). Each configuration runs REPEATS times, the configurations
+"""What the main scene's septum quadrature and its threads buy, measured
+side by side: the scene (prm/forearm_indentation.prm) to its first three
+forces (0.35, 0.5, 0.75 N) on one MPI rank, with the septa integrated with
+2 Gauss points per direction on each piece in a cell (the default) or with
+1 (the scene's choice), and the cell loops on one thread
+(DEAL_II_NUM_THREADS=1) or on every core (the scene, as `./ssc.sh run`
+runs it). Each configuration runs REPEATS times, the configurations
 alternating, so that the shared machine's load falls on all of them
 alike. Writes benchmarks/results/scene_speed.csv (wall, assembly and solve
 seconds, Newton iterations, depths) and scene_speed.png.
@@ -19,12 +21,17 @@ OUT = os.path.join(ROOT, "benchmarks", "results")
 CSV = os.path.join(OUT, "scene_speed.csv")
 FORCES = "0.35, 0.5, 0.75"
 REPEATS = 3
-# (label, septa Gauss points per direction)
-CONFIGURATIONS = [("septa 2 points (default)", 2),
-                  ("septa 1 point (scene)", 1)]
+# (label, septa Gauss points per direction, threads: None = every core)
+CONFIGURATIONS = [("septa 2 points, 1 thread", 2, 1),
+                  ("septa 1 point, 1 thread", 1, 1),
+                  ("septa 1 point, every core (scene)", 1, None)]
 
 
-def run(septa_points):
+def run(septa_points, threads):
+    env = dict(os.environ)
+    env.pop("DEAL_II_NUM_THREADS", None)
+    if threads is not None:
+        env["DEAL_II_NUM_THREADS"] = str(threads)
     with tempfile.TemporaryDirectory() as tmp:
         args = [SSC, SCENE, "-s", f"Run/Output directory={tmp}",
                 "-s", "Run/Name=run", "-s", "Run/Write fields=false",
@@ -32,7 +39,8 @@ def run(septa_points):
                 "-s", f"Punch/Forces={FORCES}",
                 "-s", "Punch/Depth uncertainty=",
                 "-s", f"Embedded/Septa/Quadrature points={septa_points}"]
-        result = subprocess.run(args, capture_output=True, text=True)
+        result = subprocess.run(args, capture_output=True, text=True,
+                                env=env)
         if result.returncode != 0:
             sys.exit(result.stdout + result.stderr)
         with open(os.path.join(tmp, "run", "summary.json")) as f:
@@ -42,11 +50,12 @@ def run(septa_points):
 def measure():
     rows = []
     for repeat in range(REPEATS):
-        for label, points in CONFIGURATIONS:
-            s = run(points)
+        for label, points, threads in CONFIGURATIONS:
+            s = run(points, threads)
             t = s["timings"]
             row = {"configuration": label, "repeat": repeat + 1,
                    "septa_points": points,
+                   "threads": s["threads_per_rank"],
                    "wall_s": round(t["total"], 2),
                    "assembly_s": round(t["assembly"], 2),
                    "solve_s": round(t["solve"], 2),
