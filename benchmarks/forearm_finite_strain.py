@@ -54,8 +54,11 @@ Each run is kept in benchmarks/results/forearm_runs_real_indenter/<case>/
 folder to rerun. (forearm_runs/ keeps the runs of the earlier scene: box
 mesh, the whole face bonded.) Writes benchmarks/results/
 forearm_convergence.csv, forearm_seeds.csv, forearm_herlin.csv,
-forearm_roi.csv, forearm_poisson.csv, forearm_friction.csv and forearm_convergence.png. One MPI rank (the scene
-factorises its tangents).
+forearm_roi.csv, forearm_poisson.csv, forearm_friction.csv and
+forearm_convergence.png. One MPI rank (the scene factorises its tangents),
+its cell loops on every core unless DEAL_II_NUM_THREADS says otherwise
+(the kept runs: one thread; poisson and friction were run with
+DEAL_II_NUM_THREADS=1 beside other jobs).
 """
 import csv, json, os, re, shutil, statistics, subprocess, sys, tempfile
 
@@ -199,6 +202,15 @@ def result_columns(summary, forces):
     for f, d in zip(forces, depths_at(summary, forces)):
         columns[f"depth_mm_at_{f}N"] = "" if d is None else d
     return columns
+
+
+def solver_columns(summary):
+    """The stiffness and the Newton iterations of a run (empty where it
+    failed; no stiffness where it stopped short)."""
+    return {"stiffness_N_per_mm": summary.get("stiffness_N_per_mm", "")
+            if summary else "",
+            "newton_iterations": summary["solver"]["newton_iterations"]
+            if summary else ""}
 
 
 def write_csv(path, fields, rows):
@@ -377,10 +389,7 @@ def poisson():
              {**Q2P1_TO_1N, **FAT_NU})]:
         s = run(SCENE, name, overrides)
         rows.append({"case": label, "dofs": s["dofs"] if s else "",
-                     "stiffness_N_per_mm": s.get("stiffness_N_per_mm", "")
-                     if s else "",
-                     "newton_iterations": s["solver"]["newton_iterations"]
-                     if s else "", **result_columns(s, forces)})
+                     **solver_columns(s), **result_columns(s, forces)})
     fields = ["case", "dofs", "stiffness_N_per_mm", "newton_iterations",
               "wall_time_s"] + [f"depth_mm_at_{f}N" for f in forces]
     write_csv(os.path.join(OUT, "forearm_poisson.csv"), fields, rows)
@@ -410,10 +419,8 @@ def friction():
     rows = []
     for label, name, overrides in cases:
         s = run(SCENE, name, overrides)
-        rows.append({"case": label, "stiffness_N_per_mm":
-                     s.get("stiffness_N_per_mm", "") if s else "",
-                     "newton_iterations": s["solver"]["newton_iterations"]
-                     if s else "", **result_columns(s, forces)})
+        rows.append({"case": label, **solver_columns(s),
+                     **result_columns(s, forces)})
     fields = ["case", "stiffness_N_per_mm", "newton_iterations",
               "wall_time_s"] + [f"depth_mm_at_{f}N" for f in forces]
     write_csv(os.path.join(OUT, "forearm_friction.csv"), fields, rows)
