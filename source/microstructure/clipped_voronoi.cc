@@ -131,6 +131,314 @@ namespace ssc
                                        polygon[i + 1] - polygon[0]);
       return 0.5 * twice_area.norm();
     }
+
+
+    // in frame units (the largest side of the box is 1)
+    const double length_tolerance = 1e-12;
+    const double area_tolerance   = 1e-14;
+
+
+    /// The seeds in frame coordinates, moved at least 1e-6 inside the box
+    /// (counted in @p diagnostics); throws for a seed outside it.
+    std::vector<Point<3>>
+    inset_seeds(const DyadicFrame           &frame,
+                const std::vector<Point<3>> &seeds_in,
+                VoronoiDiagnostics          &diagnostics)
+    {
+      const unsigned int n = seeds_in.size();
+      // Seeds at least 1e-6 inside: a seed on a side would coincide with its
+      // image, and a seed much closer to a side than that would make the
+      // circumcentres of the cells around it ill-conditioned (their error
+      // grows like the rounding error over the seed's distance to its image).
+      std::vector<Point<3>> seeds(n);
+      const double          inset = 1e-6;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const Point<3> u     = frame.to_frame(seeds_in[i]);
+          bool           moved = false;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              AssertThrow(u[d] >= -1e-9 && u[d] <= frame.extent[d] + 1e-9,
+                          ExcMessage("A Voronoi seed lies outside its box."));
+              seeds[i][d] = DyadicFrame::snap(
+                std::clamp(u[d], inset, frame.extent[d] - inset));
+              moved = moved || seeds[i][d] != u[d];
+            }
+          diagnostics.n_seeds_moved_inside += moved;
+        }
+      return seeds;
+    }
+
+
+    /// The points to triangulate: the seeds and their mirror images across
+    /// the sides within @p reach of them (every side if @p mirror_all).
+    std::vector<std::pair<CgalPoint, unsigned int>>
+    mirrored_points(const DyadicFrame           &frame,
+                    const std::vector<Point<3>> &seeds,
+                    const double                 reach,
+                    const bool                   mirror_all)
+    {
+      const unsigned int n = seeds.size();
+      // Seeds (info 0..n-1) and mirror images (info n + side n + i).
+      std::vector<std::pair<CgalPoint, unsigned int>> points;
+      points.reserve(n);
+      for (unsigned int i = 0; i < n; ++i)
+        points.emplace_back(CgalPoint(seeds[i][0], seeds[i][1], seeds[i][2]),
+                            i);
+      for (unsigned int side = 0; side < 6; ++side)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int d = side / 2;
+            const double       distance =
+              side % 2 == 0 ? seeds[i][d] : frame.extent[d] - seeds[i][d];
+            if (!mirror_all && distance > reach)
+              continue;
+            const Point<3> m = frame.mirror(seeds[i], side);
+            points.emplace_back(CgalPoint(m[0], m[1], m[2]), n + side * n + i);
+          }
+      return points;
+    }
+
+
+    /// The vertex of each seed in @p delaunay; throws for a seed that
+    /// coincides with another one (and so has none).
+    std::vector<Delaunay::Vertex_handle>
+    seed_vertices(const Delaunay              &delaunay,
+                  const std::vector<Point<3>> &seeds_in)
+    {
+      const unsigned int                   n = seeds_in.size();
+      std::vector<Delaunay::Vertex_handle> seed_vertex(n);
+      for (auto v = delaunay.finite_vertices_begin();
+           v != delaunay.finite_vertices_end();
+           ++v)
+        if (v->info() < n)
+          seed_vertex[v->info()] = v;
+      for (unsigned int i = 0; i < n; ++i)
+        if (seed_vertex[i] == Delaunay::Vertex_handle())
+          {
+            std::ostringstream message;
+            message << "Voronoi seed " << i << " at (" << seeds_in[i]
+                    << ") coincides with another seed.";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
+      return seed_vertex;
+    }
+
+
+    /// Numbers the finite cells of @p delaunay (their info; infinite ones
+    /// get an invalid index) and returns their circumcentres in that order.
+    std::vector<Point<3>>
+    cell_circumcentres(const Delaunay              &delaunay,
+                       const DyadicFrame           &frame,
+                       const std::vector<Point<3>> &seeds)
+    {
+      const unsigned int n = seeds.size();
+      // Circumcentres in double precision, except for the cells at a seed
+      // closer than 1e-3 to a side: there a seed and its image span a
+      // sliver whose circumcentre's error grows like 1/distance^2, so it
+      // is constructed exactly (CGAL's lazy exact kernel).
+      const auto near_side = [&](const unsigned int info) {
+        const unsigned int i = info < n ? info : (info - n) % n;
+        for (unsigned int d = 0; d < 3; ++d)
+          if (seeds[i][d] < 1e-3 || frame.extent[d] - seeds[i][d] < 1e-3)
+            return true;
+        return false;
+      };
+      const CGAL::Cartesian_converter<Kernel, ExactKernel> to_exact;
+      std::vector<Point<3>>                                circumcentres;
+      circumcentres.reserve(delaunay.number_of_finite_cells());
+      for (auto c = delaunay.all_cells_begin(); c != delaunay.all_cells_end();
+           ++c)
+        if (delaunay.is_infinite(c))
+          c->info() = numbers::invalid_unsigned_int;
+        else
+          {
+            c->info()  = circumcentres.size();
+            bool exact = false;
+            for (unsigned int v = 0; v < 4; ++v)
+              exact = exact || near_side(c->vertex(v)->info());
+            if (exact)
+              {
+                const auto q =
+                  CGAL::circumcenter(to_exact(c->vertex(0)->point()),
+                                     to_exact(c->vertex(1)->point()),
+                                     to_exact(c->vertex(2)->point()),
+                                     to_exact(c->vertex(3)->point()));
+                circumcentres.emplace_back(CGAL::to_double(q.x()),
+                                           CGAL::to_double(q.y()),
+                                           CGAL::to_double(q.z()));
+              }
+            else
+              circumcentres.push_back(
+                to_point(CGAL::circumcenter(c->vertex(0)->point(),
+                                            c->vertex(1)->point(),
+                                            c->vertex(2)->point(),
+                                            c->vertex(3)->point())));
+          }
+      return circumcentres;
+    }
+
+
+    /// Fills @p polygon with the circumcentres of the cells around @p edge
+    /// (the Voronoi face dual to it), merging a vertex that coincides with
+    /// its predecessor; false if one is infinite or outside the box.
+    bool
+    dual_polygon(const Delaunay              &delaunay,
+                 const Delaunay::Edge        &edge,
+                 const std::vector<Point<3>> &circumcentres,
+                 const DyadicFrame           &frame,
+                 std::vector<Point<3>>       &polygon,
+                 VoronoiDiagnostics          &found)
+    {
+      bool complete = true;
+      polygon.clear();
+      auto       circulator = delaunay.incident_cells(edge);
+      const auto first      = circulator;
+      do
+        {
+          if (circulator->info() == numbers::invalid_unsigned_int)
+            {
+              complete = false;
+              break;
+            }
+          const Point<3> &q = circumcentres[circulator->info()];
+          for (unsigned int d = 0; d < 3; ++d)
+            complete =
+              complete && q[d] > -1e-9 && q[d] < frame.extent[d] + 1e-9;
+          if (!polygon.empty() &&
+              q.distance(polygon.back()) <= length_tolerance)
+            ++found.n_merged_vertices;
+          else
+            polygon.push_back(q);
+        }
+      while (++circulator != first);
+      return complete;
+    }
+
+
+    /// Adds the face @p polygon of area @p area between seed @p i and
+    /// point @p other (a seed or a mirror image) to the cells of its seeds.
+    void
+    add_face(const unsigned int           i,
+             const unsigned int           other,
+             const std::vector<Point<3>> &polygon,
+             const double                 area,
+             const std::vector<Point<3>> &seeds,
+             const bool                   with_faces,
+             std::vector<VoronoiCell>    &cells)
+    {
+      const unsigned int                n    = seeds.size();
+      const std::array<unsigned int, 2> ends = {{i, other}};
+      for (unsigned int end = 0; end < 2; ++end)
+        {
+          const unsigned int a = ends[end], b = ends[1 - end];
+          if (a >= n)
+            continue;
+          add_pyramid(seeds[a], polygon, cells[a]);
+          if (with_faces)
+            cells[a].faces.push_back(
+              {b < n ? static_cast<int>(b) : -1 - static_cast<int>((b - n) / n),
+               polygon,
+               area});
+        }
+    }
+
+
+    /// Computes the cells of the seeds (in frame units) into @p cells, the
+    /// faces dropped and vertices merged into @p found; false (and stops)
+    /// if a cell is not closed inside the box by the mirror images.
+    bool
+    build_cells(const Delaunay                             &delaunay,
+                const std::vector<Delaunay::Vertex_handle> &seed_vertex,
+                const std::vector<Point<3>>                &circumcentres,
+                const std::vector<Point<3>>                &seeds,
+                const DyadicFrame                          &frame,
+                const bool                                  with_faces,
+                std::vector<VoronoiCell>                   &cells,
+                VoronoiDiagnostics                         &found)
+    {
+      const unsigned int                   n = seeds.size();
+      std::vector<Point<3>>                polygon;
+      std::vector<Delaunay::Cell_handle>   incident;
+      std::vector<Delaunay::Vertex_handle> neighbours;
+      bool                                 complete = true;
+      // Every Delaunay edge (v, w) at a seed v is dual to a face of v's
+      // cell: the polygon of the circumcentres of the cells around it. A
+      // face between two seeds is computed once, from the lower index.
+      for (unsigned int i = 0; complete && i < n; ++i)
+        {
+          const Delaunay::Vertex_handle v = seed_vertex[i];
+          incident.clear();
+          delaunay.incident_cells(v, std::back_inserter(incident));
+          neighbours.clear();
+          for (const auto &c : incident)
+            for (unsigned int k = 0; k < 4; ++k)
+              {
+                const Delaunay::Vertex_handle w = c->vertex(k);
+                if (w == v || delaunay.is_infinite(w) ||
+                    (w->info() < n && w->info() < i) ||
+                    std::find(neighbours.begin(), neighbours.end(), w) !=
+                      neighbours.end())
+                  continue;
+                neighbours.push_back(w);
+                const unsigned int other = w->info();
+                // a seed and another seed's image meet only in a side
+                // of the box, in a face of zero area
+                if (other >= n && (other - n) % n != i)
+                  {
+                    ++found.n_degenerate_faces;
+                    continue;
+                  }
+
+                const Delaunay::Edge edge(c, c->index(v), k);
+                if (!dual_polygon(
+                      delaunay, edge, circumcentres, frame, polygon, found))
+                  complete = false;
+                if (!complete)
+                  break;
+                while (polygon.size() > 1 &&
+                       polygon.front().distance(polygon.back()) <=
+                         length_tolerance)
+                  {
+                    polygon.pop_back();
+                    ++found.n_merged_vertices;
+                  }
+                const double area =
+                  polygon.size() >= 3 ? polygon_area(polygon) : 0.;
+                if (area <= area_tolerance)
+                  {
+                    ++found.n_degenerate_faces;
+                    continue;
+                  }
+
+                add_face(i, other, polygon, area, seeds, with_faces, cells);
+              }
+        }
+      return complete;
+    }
+
+
+    /// Takes @p cells from the frame back to the box's coordinates (and the
+    /// centroids from first moments to points); throws for an empty cell.
+    void
+    cells_to_box(const DyadicFrame &frame, std::vector<VoronoiCell> &cells)
+    {
+      const double h = frame.scale;
+      for (auto &cell : cells)
+        {
+          AssertThrow(cell.volume > 0,
+                      ExcMessage("Internal error: empty Voronoi cell."));
+          cell.centroid = frame.from_frame(cell.centroid / cell.volume);
+          cell.second_moment *= h * h * h * h * h;
+          cell.volume *= h * h * h;
+          for (auto &face : cell.faces)
+            {
+              face.area *= h * h;
+              for (auto &vertex : face.vertices)
+                vertex = frame.from_frame(vertex);
+            }
+        }
+    }
   } // namespace
 
 
@@ -149,30 +457,9 @@ namespace ssc
                   ExcMessage("The box of a Voronoi tessellation must have a "
                              "positive extent in every direction."));
     const DyadicFrame frame(box);
-    // in frame units (the largest side of the box is 1)
-    const double length_tolerance = 1e-12;
-    const double area_tolerance   = 1e-14;
 
-    // Seeds at least 1e-6 inside: a seed on a side would coincide with its
-    // image, and a seed much closer to a side than that would make the
-    // circumcentres of the cells around it ill-conditioned (their error grows
-    // like the rounding error over the seed's distance to its image).
-    std::vector<Point<3>> seeds(n);
-    const double          inset = 1e-6;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const Point<3> u     = frame.to_frame(seeds_in[i]);
-        bool           moved = false;
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            AssertThrow(u[d] >= -1e-9 && u[d] <= frame.extent[d] + 1e-9,
-                        ExcMessage("A Voronoi seed lies outside its box."));
-            seeds[i][d] = DyadicFrame::snap(
-              std::clamp(u[d], inset, frame.extent[d] - inset));
-            moved = moved || seeds[i][d] != u[d];
-          }
-        diagnostics.n_seeds_moved_inside += moved;
-      }
+    const std::vector<Point<3>> seeds =
+      inset_seeds(frame, seeds_in, diagnostics);
 
     // Mirror images matter only for seeds whose cell reaches a side. Start
     // with the seeds within two mean spacings of a side and widen the reach
@@ -186,24 +473,8 @@ namespace ssc
     for (;;)
       {
         const bool mirror_all = reach >= largest_extent;
-        // Seeds (info 0..n-1) and mirror images (info n + side n + i).
-        std::vector<std::pair<CgalPoint, unsigned int>> points;
-        points.reserve(n);
-        for (unsigned int i = 0; i < n; ++i)
-          points.emplace_back(CgalPoint(seeds[i][0], seeds[i][1], seeds[i][2]),
-                              i);
-        for (unsigned int side = 0; side < 6; ++side)
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const unsigned int d = side / 2;
-              const double       distance =
-                side % 2 == 0 ? seeds[i][d] : frame.extent[d] - seeds[i][d];
-              if (!mirror_all && distance > reach)
-                continue;
-              const Point<3> m = frame.mirror(seeds[i], side);
-              points.emplace_back(CgalPoint(m[0], m[1], m[2]),
-                                  n + side * n + i);
-            }
+        const std::vector<std::pair<CgalPoint, unsigned int>> points =
+          mirrored_points(frame, seeds, reach, mirror_all);
         const Delaunay delaunay(points.begin(), points.end());
         // Few seeds in a thin or needle-shaped box: the seeds and the
         // images within reach may be coplanar or collinear, and the
@@ -218,154 +489,21 @@ namespace ssc
             continue;
           }
 
-        std::vector<Delaunay::Vertex_handle> seed_vertex(n);
-        for (auto v = delaunay.finite_vertices_begin();
-             v != delaunay.finite_vertices_end();
-             ++v)
-          if (v->info() < n)
-            seed_vertex[v->info()] = v;
-        for (unsigned int i = 0; i < n; ++i)
-          if (seed_vertex[i] == Delaunay::Vertex_handle())
-            {
-              std::ostringstream message;
-              message << "Voronoi seed " << i << " at (" << seeds_in[i]
-                      << ") coincides with another seed.";
-              AssertThrow(false, ExcMessage(message.str()));
-            }
+        const std::vector<Delaunay::Vertex_handle> seed_vertex =
+          seed_vertices(delaunay, seeds_in);
+        const std::vector<Point<3>> circumcentres =
+          cell_circumcentres(delaunay, frame, seeds);
 
-        // Circumcentres in double precision, except for the cells at a seed
-        // closer than 1e-3 to a side: there a seed and its image span a
-        // sliver whose circumcentre's error grows like 1/distance^2, so it
-        // is constructed exactly (CGAL's lazy exact kernel).
-        const auto near_side = [&](const unsigned int info) {
-          const unsigned int i = info < n ? info : (info - n) % n;
-          for (unsigned int d = 0; d < 3; ++d)
-            if (seeds[i][d] < 1e-3 || frame.extent[d] - seeds[i][d] < 1e-3)
-              return true;
-          return false;
-        };
-        const CGAL::Cartesian_converter<Kernel, ExactKernel> to_exact;
-        std::vector<Point<3>>                                circumcentres;
-        circumcentres.reserve(delaunay.number_of_finite_cells());
-        for (auto c = delaunay.all_cells_begin(); c != delaunay.all_cells_end();
-             ++c)
-          if (delaunay.is_infinite(c))
-            c->info() = numbers::invalid_unsigned_int;
-          else
-            {
-              c->info()  = circumcentres.size();
-              bool exact = false;
-              for (unsigned int v = 0; v < 4; ++v)
-                exact = exact || near_side(c->vertex(v)->info());
-              if (exact)
-                {
-                  const auto q =
-                    CGAL::circumcenter(to_exact(c->vertex(0)->point()),
-                                       to_exact(c->vertex(1)->point()),
-                                       to_exact(c->vertex(2)->point()),
-                                       to_exact(c->vertex(3)->point()));
-                  circumcentres.emplace_back(CGAL::to_double(q.x()),
-                                             CGAL::to_double(q.y()),
-                                             CGAL::to_double(q.z()));
-                }
-              else
-                circumcentres.push_back(
-                  to_point(CGAL::circumcenter(c->vertex(0)->point(),
-                                              c->vertex(1)->point(),
-                                              c->vertex(2)->point(),
-                                              c->vertex(3)->point())));
-            }
-
-        std::vector<VoronoiCell>             cells(n);
-        VoronoiDiagnostics                   found;
-        std::vector<Point<3>>                polygon;
-        std::vector<Delaunay::Cell_handle>   incident;
-        std::vector<Delaunay::Vertex_handle> neighbours;
-        bool                                 complete = true;
-        // Every Delaunay edge (v, w) at a seed v is dual to a face of v's
-        // cell: the polygon of the circumcentres of the cells around it. A
-        // face between two seeds is computed once, from the lower index.
-        for (unsigned int i = 0; complete && i < n; ++i)
-          {
-            const Delaunay::Vertex_handle v = seed_vertex[i];
-            incident.clear();
-            delaunay.incident_cells(v, std::back_inserter(incident));
-            neighbours.clear();
-            for (const auto &c : incident)
-              for (unsigned int k = 0; k < 4; ++k)
-                {
-                  const Delaunay::Vertex_handle w = c->vertex(k);
-                  if (w == v || delaunay.is_infinite(w) ||
-                      (w->info() < n && w->info() < i) ||
-                      std::find(neighbours.begin(), neighbours.end(), w) !=
-                        neighbours.end())
-                    continue;
-                  neighbours.push_back(w);
-                  const unsigned int other = w->info();
-                  // a seed and another seed's image meet only in a side
-                  // of the box, in a face of zero area
-                  if (other >= n && (other - n) % n != i)
-                    {
-                      ++found.n_degenerate_faces;
-                      continue;
-                    }
-
-                  polygon.clear();
-                  const Delaunay::Edge edge(c, c->index(v), k);
-                  auto       circulator = delaunay.incident_cells(edge);
-                  const auto first      = circulator;
-                  do
-                    {
-                      if (circulator->info() == numbers::invalid_unsigned_int)
-                        {
-                          complete = false;
-                          break;
-                        }
-                      const Point<3> &q = circumcentres[circulator->info()];
-                      for (unsigned int d = 0; d < 3; ++d)
-                        complete = complete && q[d] > -1e-9 &&
-                                   q[d] < frame.extent[d] + 1e-9;
-                      if (!polygon.empty() &&
-                          q.distance(polygon.back()) <= length_tolerance)
-                        ++found.n_merged_vertices;
-                      else
-                        polygon.push_back(q);
-                    }
-                  while (++circulator != first);
-                  if (!complete)
-                    break;
-                  while (polygon.size() > 1 &&
-                         polygon.front().distance(polygon.back()) <=
-                           length_tolerance)
-                    {
-                      polygon.pop_back();
-                      ++found.n_merged_vertices;
-                    }
-                  const double area =
-                    polygon.size() >= 3 ? polygon_area(polygon) : 0.;
-                  if (area <= area_tolerance)
-                    {
-                      ++found.n_degenerate_faces;
-                      continue;
-                    }
-
-                  const std::array<unsigned int, 2> ends = {{i, other}};
-                  for (unsigned int end = 0; end < 2; ++end)
-                    {
-                      const unsigned int a = ends[end], b = ends[1 - end];
-                      if (a >= n)
-                        continue;
-                      add_pyramid(seeds[a], polygon, cells[a]);
-                      if (with_faces)
-                        cells[a].faces.push_back(
-                          {b < n ? static_cast<int>(b) :
-                                   -1 - static_cast<int>((b - n) / n),
-                           polygon,
-                           area});
-                    }
-                }
-          }
-        if (!complete)
+        std::vector<VoronoiCell> cells(n);
+        VoronoiDiagnostics       found;
+        if (!build_cells(delaunay,
+                         seed_vertex,
+                         circumcentres,
+                         seeds,
+                         frame,
+                         with_faces,
+                         cells,
+                         found))
           {
             AssertThrow(!mirror_all,
                         ExcMessage("Internal error: a Voronoi cell is not "
@@ -378,21 +516,7 @@ namespace ssc
         diagnostics.n_degenerate_faces += found.n_degenerate_faces;
         diagnostics.n_merged_vertices += found.n_merged_vertices;
         // back from the frame to the box's coordinates
-        const double h = frame.scale;
-        for (auto &cell : cells)
-          {
-            AssertThrow(cell.volume > 0,
-                        ExcMessage("Internal error: empty Voronoi cell."));
-            cell.centroid = frame.from_frame(cell.centroid / cell.volume);
-            cell.second_moment *= h * h * h * h * h;
-            cell.volume *= h * h * h;
-            for (auto &face : cell.faces)
-              {
-                face.area *= h * h;
-                for (auto &vertex : face.vertices)
-                  vertex = frame.from_frame(vertex);
-              }
-          }
+        cells_to_box(frame, cells);
         return cells;
       }
   }
