@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Runs the growth scenes from their prm files -- fat injection in the
 cheek (deep versus superficial fat) and cellulite in the buttock (young,
-aged, after a fasciotomy) -- and writes, into results/growth/:
+aged, after a fasciotomy) -- and writes, into
+benchmarks/growth_sensitivity/results/:
 
   growth_scenes.csv              the metrics of every scene (summary.json)
   cheek_injection.png            DAT versus SAT injection, one colour scale
@@ -20,7 +21,7 @@ from concurrent.futures import ThreadPoolExecutor
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SSC = os.path.join(ROOT, "build", "bin", "ssc")
 OUTPUT = os.path.join(ROOT, "output")
-RESULTS = os.path.join(ROOT, "results", "growth")
+RESULTS = os.path.join(ROOT, "benchmarks", "growth_sensitivity", "results")
 SCENES = ["cheek_injection_dat", "cheek_injection_sat", "buttock_cellulite",
           "buttock_cellulite_aged", "buttock_cellulite_fasciotomy"]
 FIGURES = {

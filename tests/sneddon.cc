@@ -1,6 +1,6 @@
 // Frictionless rigid flat punch on a deep homogeneous block against
 // Sneddon's half-space stiffness F/delta = 2 a E / (1 - nu^2), through the
-// punch scene and benchmarks/punch_sneddon.prm. The frictionless punch
+// punch scene and benchmarks/punch_sneddon/. The frictionless punch
 // imposes only u_z = -delta under the punch and leaves the surface free to
 // slide, which is exactly Sneddon's mixed boundary-value problem (a bonded
 // punch would be stiffer by (1 - nu) ln(3 - 4 nu) / (1 - 2 nu), 2.9 % at
@@ -27,7 +27,8 @@ main(int argc, char **argv)
   for (const unsigned int level : {10u, 11u, 12u})
     {
       ssc::Parameters parameters;
-      parameters.read(SOURCE_DIR "/../benchmarks/punch_sneddon.prm",
+      parameters.read(SOURCE_DIR
+                      "/../benchmarks/punch_sneddon/punch_sneddon.prm",
                       {"Run/Output directory=results",
                        "Run/Test mode=true",
                        "Mesh/Region of interest/Local refinements=" +

@@ -1,0 +1,105 @@
+#!/usr/bin/python3
+"""What the main scene's septum quadrature and its threads buy, measured
+side by side: the scene (prm/forearm_indentation.prm) to its first three
+forces (0.35, 0.5, 0.75 N) on one MPI rank, with the septa integrated with
+2 Gauss points per direction on each piece in a cell (the default) or with
+1 (the scene's choice), and the cell loops on one thread
+(DEAL_II_NUM_THREADS=1) or on every core (the scene, as `./ssc.sh run`
+runs it). Each configuration runs REPEATS times, the configurations
+alternating, so that the shared machine's load falls on all of them
+alike. Writes benchmarks/forearm/results/scene_speed.csv (wall, assembly
+and solve seconds, Newton iterations, depths) and scene_speed.png.
+
+    /usr/bin/python3 benchmarks/forearm/scene_speed.py [--plot-only]
+"""
+import csv, json, os, subprocess, sys, tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+SSC = os.path.join(ROOT, "build", "bin", "ssc")
+SCENE = os.path.join(ROOT, "prm", "forearm_indentation.prm")
+OUT = os.path.join(HERE, "results")
+CSV = os.path.join(OUT, "scene_speed.csv")
+FORCES = "0.35, 0.5, 0.75"
+REPEATS = 3
+# (label, septa Gauss points per direction, threads: None = every core)
+CONFIGURATIONS = [("septa 2 points, 1 thread", 2, 1),
+                  ("septa 1 point, 1 thread", 1, 1),
+                  ("septa 1 point, every core (scene)", 1, None)]
+
+
+def run(septa_points, threads):
+    env = dict(os.environ)
+    env.pop("DEAL_II_NUM_THREADS", None)
+    if threads is not None:
+        env["DEAL_II_NUM_THREADS"] = str(threads)
+    with tempfile.TemporaryDirectory() as tmp:
+        args = [SSC, SCENE, "-s", f"Run/Output directory={tmp}",
+                "-s", "Run/Name=run", "-s", "Run/Write fields=false",
+                "-s", "Punch/Section=false", "-s", "Punch/Profile length=0",
+                "-s", f"Punch/Forces={FORCES}",
+                "-s", "Punch/Depth uncertainty=",
+                "-s", f"Embedded/Septa/Quadrature points={septa_points}"]
+        result = subprocess.run(args, capture_output=True, text=True,
+                                env=env)
+        if result.returncode != 0:
+            sys.exit(result.stdout + result.stderr)
+        with open(os.path.join(tmp, "run", "summary.json")) as f:
+            return json.load(f)
+
+
+def measure():
+    rows = []
+    for repeat in range(REPEATS):
+        for label, points, threads in CONFIGURATIONS:
+            s = run(points, threads)
+            t = s["timings"]
+            row = {"configuration": label, "repeat": repeat + 1,
+                   "septa_points": points,
+                   "threads": s["threads_per_rank"],
+                   "wall_s": round(t["total"], 2),
+                   "assembly_s": round(t["assembly"], 2),
+                   "solve_s": round(t["solve"], 2),
+                   "newton_iterations": s["solver"]["newton_iterations"],
+                   "septa_quadrature_points":
+                       s["embedded"]["septa_quadrature_points"]}
+            for f, d in zip(s["force_N"], s["depth_mm"]):
+                row[f"depth_mm_at_{f:g}N"] = d
+            rows.append(row)
+            print(", ".join(f"{k} {v}" for k, v in row.items()), flush=True)
+    with open(CSV, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    print("wrote", os.path.relpath(CSV, ROOT))
+
+
+def plot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    with open(CSV) as f:
+        rows = list(csv.DictReader(f))
+    labels = [c[0] for c in CONFIGURATIONS]
+    fig, ax = plt.subplots(figsize=(7, 3.5))
+    for i, label in enumerate(labels):
+        runs = [r for r in rows if r["configuration"] == label]
+        for j, r in enumerate(runs):
+            y = i + 0.35 * (j - (len(runs) - 1) / 2)
+            ax.barh(y, float(r["assembly_s"]), 0.3, color="tab:blue",
+                    label="assembly" if i == j == 0 else None)
+            ax.barh(y, float(r["solve_s"]), 0.3, left=float(r["assembly_s"]),
+                    color="tab:orange", label="solve" if i == j == 0 else None)
+    ax.set_yticks(range(len(labels)), labels, fontsize=8)
+    ax.set_xlabel("wall time [s], scene to 0.75 N, one MPI rank")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, axis="x")
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "scene_speed.png"), dpi=110)
+    print("wrote benchmarks/forearm/results/scene_speed.png")
+
+
+if __name__ == "__main__":
+    if "--plot-only" not in sys.argv:
+        measure()
+    plot()
