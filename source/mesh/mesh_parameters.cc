@@ -12,6 +12,17 @@ namespace ssc
   MeshParameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
+    add_layout_parameters(prm);
+    add_cell_size_parameters(prm);
+    add_o_grid_parameters(prm);
+    add_region_of_interest_parameters(prm);
+    prm.leave_subsection();
+  }
+
+
+  void
+  MeshParameters::add_layout_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter(
       "Layout",
       layout,
@@ -44,6 +55,12 @@ namespace ssc
                       patch_length_y,
                       "Lateral extent of the patch in y, mm, centred at 0.",
                       Patterns::Double(0, 1e4));
+  }
+
+
+  void
+  MeshParameters::add_cell_size_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter("Cell size",
                       cell_size,
                       "Lateral size of the background hexahedra in the core "
@@ -93,6 +110,12 @@ namespace ssc
       "on a mesh line of the refined mesh (a multiple of the core cell size "
       "after refinement, measured from the patch centre).",
       Patterns::Double(0, 1e4));
+  }
+
+
+  void
+  MeshParameters::add_o_grid_parameters(ParameterHandler &prm)
+  {
     prm.enter_subsection("O-grid");
     prm.add_parameter("Cells around",
                       o_grid_cells_around,
@@ -129,6 +152,12 @@ namespace ssc
       "much as radially.",
       Patterns::Bool());
     prm.leave_subsection();
+  }
+
+
+  void
+  MeshParameters::add_region_of_interest_parameters(ParameterHandler &prm)
+  {
     prm.enter_subsection("Region of interest");
     prm.add_parameter("Ring radius",
                       roi_radius,
@@ -153,7 +182,6 @@ namespace ssc
                       "Number of local refinements of the cells touching the "
                       "region (hanging nodes are constrained).",
                       Patterns::Integer(0, 20));
-    prm.leave_subsection();
     prm.leave_subsection();
   }
 

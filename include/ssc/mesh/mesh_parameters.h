@@ -120,6 +120,23 @@ namespace ssc
     /// Checks the values (after parsing); throws naming the parameter.
     void
     check() const;
+
+  private:
+    /// Declares Layout, Symmetry and the patch lengths (in section "Mesh").
+    void
+    add_layout_parameters(ParameterHandler &prm);
+
+    /// Declares the lateral cell sizes, their grading and the refinements.
+    void
+    add_cell_size_parameters(ParameterHandler &prm);
+
+    /// Declares subsection "O-grid" (the rings around the fitted circle).
+    void
+    add_o_grid_parameters(ParameterHandler &prm);
+
+    /// Declares subsection "Region of interest" (local refinement).
+    void
+    add_region_of_interest_parameters(ParameterHandler &prm);
   };
 } // namespace ssc
 
