@@ -10,6 +10,18 @@ namespace ssc
   NewtonParameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Nonlinear solver");
+    add_convergence_parameters(prm);
+    add_globalisation_parameters(prm);
+    add_load_stepping_parameters(prm);
+    add_continuation_parameters(prm);
+    add_forcing_term_parameters(prm);
+    prm.leave_subsection();
+  }
+
+
+  void
+  NewtonParameters::add_convergence_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter("Max iterations",
                       max_iterations,
                       "Newton iterations per load increment before the "
@@ -28,6 +40,12 @@ namespace ssc
                       absolute_tolerance,
                       "... or is below this value (N).",
                       Patterns::Double(0));
+  }
+
+
+  void
+  NewtonParameters::add_globalisation_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter(
       "Line search",
       line_search,
@@ -61,6 +79,12 @@ namespace ssc
                       max_line_search,
                       "Trial steps of the line search before it gives up.",
                       Patterns::Integer(1, 50));
+  }
+
+
+  void
+  NewtonParameters::add_load_stepping_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter("Initial steps",
                       initial_steps,
                       "The first increment is 1/(this) of the way to the "
@@ -98,6 +122,12 @@ namespace ssc
                       "An increment that converged in at most this many "
                       "Newton iterations is easy.",
                       Patterns::Integer(1, 100));
+  }
+
+
+  void
+  NewtonParameters::add_continuation_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter(
       "Continuation iterations",
       continuation_iterations,
@@ -119,6 +149,12 @@ namespace ssc
                       "relaxation). Newton's method takes over again once "
                       "the residual has dropped tenfold.",
                       Patterns::Double(0));
+  }
+
+
+  void
+  NewtonParameters::add_forcing_term_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter(
       "Forcing term",
       forcing_term,
@@ -147,7 +183,6 @@ namespace ssc
       "stall at a few per cent. With the fixed forcing term only Newton's "
       "tolerance counts. At least Max forcing term.",
       Patterns::Double(0, 0.9));
-    prm.leave_subsection();
   }
 
 

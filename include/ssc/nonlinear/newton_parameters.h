@@ -101,6 +101,27 @@ namespace ssc
     /// Checks the values (after parsing); throws naming the parameter.
     void
     check() const;
+
+  private:
+    /// Declares when Newton's method has converged or failed.
+    void
+    add_convergence_parameters(ParameterHandler &prm);
+
+    /// Declares the line search and the trust-region globalisation.
+    void
+    add_globalisation_parameters(ParameterHandler &prm);
+
+    /// Declares the adaptive load increments and their predictor.
+    void
+    add_load_stepping_parameters(ParameterHandler &prm);
+
+    /// Declares the pseudo-transient continuation (and trust-region steps).
+    void
+    add_continuation_parameters(ParameterHandler &prm);
+
+    /// Declares how accurately each Newton update is solved.
+    void
+    add_forcing_term_parameters(ParameterHandler &prm);
   };
 
 } // namespace ssc
