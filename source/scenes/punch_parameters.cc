@@ -51,6 +51,18 @@ namespace ssc
   PunchParameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Punch");
+    add_face_parameters(prm);
+    add_contact_parameters(prm);
+    add_loading_parameters(prm);
+    add_output_parameters(prm);
+    add_edge_contact_parameters(prm);
+    prm.leave_subsection();
+  }
+
+
+  void
+  PunchParameters::add_face_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter("Shape",
                       shape,
                       "circle: a flat cylindrical punch of radius Radius; "
@@ -73,6 +85,12 @@ namespace ssc
                       width,
                       "Width of a rectangular face along y, mm.",
                       Patterns::Double(0));
+  }
+
+
+  void
+  PunchParameters::add_contact_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter("Contact",
                       contact,
                       "bonded: the skin under the punch moves with it (no "
@@ -99,6 +117,12 @@ namespace ssc
       "so a sticking node slips elastically about h/(factor) at a shear "
       "traction E.",
       Patterns::Double(0));
+  }
+
+
+  void
+  PunchParameters::add_loading_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter("Control",
                       control,
                       "displacement: the depth is prescribed (Depth, Load "
@@ -132,6 +156,12 @@ namespace ssc
       "the parameter set it was measured for: the study says when it has "
       "to be measured again.",
       Patterns::List(Patterns::Double(0)));
+  }
+
+
+  void
+  PunchParameters::add_output_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter("Profile length",
                       profile_length,
                       "Length (mm) of the line y = 0 through the punch "
@@ -146,6 +176,12 @@ namespace ssc
                       section,
                       "Write the displacement and von Mises stress on the "
                       "vertical plane y = 0 (section.csv, last step).");
+  }
+
+
+  void
+  PunchParameters::add_edge_contact_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter(
       "Edge contact",
       edge_contact,
@@ -178,7 +214,6 @@ namespace ssc
                       "the surface face, so the skin penetrates about "
                       "h/(factor) at the contact pressure E.",
                       Patterns::Double(0));
-    prm.leave_subsection();
   }
 
 

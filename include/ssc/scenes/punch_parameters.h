@@ -123,6 +123,27 @@ namespace ssc
     /// Checks the values (after parsing); throws naming the parameter.
     void
     check() const;
+
+  private:
+    /// Declares the shape and size of the punch's face.
+    void
+    add_face_parameters(ParameterHandler &prm);
+
+    /// Declares how the skin under the face is held (bonded, friction).
+    void
+    add_contact_parameters(ParameterHandler &prm);
+
+    /// Declares the depths or forces of the load steps.
+    void
+    add_loading_parameters(ParameterHandler &prm);
+
+    /// Declares the surface profile and the section written.
+    void
+    add_output_parameters(ParameterHandler &prm);
+
+    /// Declares the rounded edge's contact and the tied region.
+    void
+    add_edge_contact_parameters(ParameterHandler &prm);
   };
 } // namespace ssc
 
