@@ -26,12 +26,13 @@ rows of cases not run stay).
     /usr/bin/python3 benchmarks/finite_strain_solver/finite_strain_solvers.py
         [--cases hard forearm ogrid]
 """
-import argparse, csv, json, os, subprocess, tempfile, time
+import argparse, csv, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
-                   "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+ROOT = ssc_runner.ROOT
 OUT = os.path.join(HERE, "results")
 LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
 FIELDS = ["case", "preconditioner", "indefinite", "predictor", "ranks",
@@ -66,27 +67,21 @@ def run(case, preconditioner, predictor, ranks, folder, indefinite="ldlt",
         repeat=0):
     prm, settings = CASES[case]
     name = f"{case}_{preconditioner}_{indefinite}_{predictor}_{ranks}_{repeat}"
-    args = [SSC, prm, "-s", f"Run/Output directory={folder}",
-            "-s", f"Run/Name={name}", "-s", "Run/Write fields=false",
-            "-s", f"Elasticity/Linear solver/Preconditioner={preconditioner}",
-            "-s", "Elasticity/Linear solver/Factor indefinite tangents="
-            f"{'true' if indefinite == 'ldlt' else 'false'}",
-            "-s", f"Nonlinear solver/Predictor={predictor}"]
-    for s in settings:
-        args += ["-s", s]
-    if ranks > 1:
-        args = ["mpirun", "-np", str(ranks)] + args
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    start = time.time()
-    done = subprocess.run(args, capture_output=True, text=True, env=env,
+    overrides = ["Run/Write fields=false",
+                 f"Elasticity/Linear solver/Preconditioner={preconditioner}",
+                 "Elasticity/Linear solver/Factor indefinite tangents="
+                 f"{'true' if indefinite == 'ldlt' else 'false'}",
+                 f"Nonlinear solver/Predictor={predictor}"] + settings
+    # mpirun only for several ranks, with its default binding of the ranks
+    # to cores (bind=True), as these runs were measured
+    done = ssc_runner.run(prm, overrides, folder, name,
+                          ranks=ranks if ranks > 1 else None, bind=True,
                           timeout=3600)
-    wall = time.time() - start
-    if done.returncode != 0:
+    wall = done.wall_s
+    if not done.ok:
         print(f"{name} failed: {done.stderr.strip()[:300]}", flush=True)
         return None
-    with open(os.path.join(folder, name, "summary.json")) as f:
-        s = json.load(f)
+    s = done.summary()
     t, solver = s["timings"], s["solver"]
     row = dict(case=case, preconditioner=preconditioner,
                indefinite=indefinite if preconditioner == "cholesky" else "-",
@@ -124,7 +119,7 @@ def main():
         with open(path) as f:
             rows = [r for r in csv.DictReader(f)
                     if r["case"] not in args.cases]
-    with tempfile.TemporaryDirectory() as folder:
+    with ssc_runner.scratch() as folder:
         for case in args.cases:
             for entry in plan[case]:
                 row = run(case, *entry[:3], folder, *entry[3:])

@@ -23,12 +23,13 @@ their log.txt, stay in output/hard_cases/caseI/. --set adds an entry to
 every case, e.g. "Elasticity/Linear solver/Preconditioner=cholesky", and
 --csv names the results file for such a variant.)
 """
-import argparse, concurrent.futures, csv, json, os, subprocess, time
+import argparse, concurrent.futures, csv, os, subprocess, sys, time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
-                   "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+ROOT = ssc_runner.ROOT
 PRM = os.path.join(HERE, "hard_cases.prm")
 OUT = os.path.join(HERE, "results")
 LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
@@ -88,13 +89,9 @@ FIELDS = ["case", "converged", "message", "force_N", "depth_mm",
 
 def run(label, overrides, folder, index, timeout):
     name = f"case{index}"
-    args = [SSC, PRM, "-s", f"Run/Output directory={folder}",
-            "-s", f"Run/Name={name}"]
-    for key, value in overrides.items():
-        args += ["-s", f"{key}={value}"]
     start = time.time()
     try:
-        result = subprocess.run(args, capture_output=True, text=True,
+        result = ssc_runner.run(PRM, overrides, folder, name,
                                 timeout=timeout)
         status, stderr = result.returncode, result.stderr
     except subprocess.TimeoutExpired:
@@ -106,8 +103,7 @@ def run(label, overrides, folder, index, timeout):
         lines = [l for l in stderr.splitlines() if l.strip()]
         row["message"] = lines[-1] if lines else f"exit status {status}"
         return row
-    with open(os.path.join(folder, name, "summary.json")) as f:
-        s = json.load(f)
+    s = result.summary()
     solver = s.get("solver", {})
     row.update(force_N=s["force_N"][-1] if isinstance(s["force_N"], list)
                else s["force_N"],

@@ -45,12 +45,13 @@ The runs' folders, with their log.txt, stay in output/large_deformation*/
         [--globalisation "line search"|"trust region"|hybrid]
         [--laws LAW ...] [--contacts CONTACT ...] [--plot-only]
 """
-import argparse, csv, os, re, subprocess, time
+import argparse, csv, os, re, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
-                   "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+ROOT = ssc_runner.ROOT
 PRM = os.path.join(ROOT, "prm", "forearm_indentation_linear.prm")
 OUT = os.path.join(HERE, "results")
 LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
@@ -65,7 +66,6 @@ def run(law, contact, refinements, formulation, degree, ranks, globalisation,
         folder):
     name = f"{law}_{contact}".replace("-", "_")
     overrides = {
-        "Run/Output directory": folder, "Run/Name": name,
         "Run/Write fields": "false", "Punch/Section": "false",
         "Punch/Contact": contact, "Elasticity/Formulation": formulation,
         "Elasticity/Degree": str(degree),
@@ -77,20 +77,12 @@ def run(law, contact, refinements, formulation, degree, ranks, globalisation,
         overrides["Embedded/Septa/Tension field"] = "true"
         overrides["Embedded/Ligaments/Tension only"] = "true"
         overrides["Punch/Edge contact"] = "true"
-    args = ["mpirun", "-np", str(ranks), SSC, PRM]
-    for key, value in overrides.items():
-        args += ["-s", f"{key}={value}"]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               # mpirun binds each job's ranks to the first cores: two
-               # jobs at once would share one core
-               OMPI_MCA_hwloc_base_binding_policy="none")
-    start = time.time()
     # a guard against a hang, not a limit on a slow run: a Q2 run takes
-    # about an hour on this machine
-    result = subprocess.run(args, capture_output=True, text=True, env=env,
+    # about an hour on this machine; mpirun even for one rank, its ranks
+    # not bound to cores
+    result = ssc_runner.run(PRM, overrides, folder, name, ranks=ranks,
                             timeout=3600 * degree**2 * 2 // ranks)
-    total = time.time() - start
+    total = result.wall_s
     if result.returncode != 0:
         lines = [l for l in result.stderr.splitlines() if "error" in l]
         message = lines[-1] if lines else f"exit status {result.returncode}"
@@ -99,8 +91,7 @@ def run(law, contact, refinements, formulation, degree, ranks, globalisation,
     dofs = next(line.split(":")[1].split("(")[0].strip()
                 for line in result.stdout.splitlines()
                 if line.startswith("Degrees of freedom"))
-    with open(os.path.join(folder, name, "force_displacement.csv")) as f:
-        steps = list(csv.DictReader(f))
+    steps = ssc_runner.read_table(result.folder)
     rows = []
     for s in steps:
         rows.append(dict(law=law, contact=contact, dofs=dofs,

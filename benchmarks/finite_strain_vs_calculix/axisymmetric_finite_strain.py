@@ -55,7 +55,6 @@ each code, 0.25 and 0.5 mm, exit status 1 if they differ by over 1 %.
 """
 import argparse
 import csv
-import json
 import math
 import os
 import re
@@ -67,10 +66,10 @@ import time
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import calculix_punch as cp  # noqa: E402
+import ssc_runner  # noqa: E402
 
 # (name, thickness mm, Young's modulus MPa), from the skin surface down:
 # prm/regions/forearm.prm with the moduli of forearm_in_vivo.prm
@@ -167,7 +166,7 @@ def ccx_forces(level, edge_size, depths, workdir, element="CAX8R",
 # --------------------------------------------------------------------------
 # ssc on the o-grid
 # --------------------------------------------------------------------------
-SSC = os.path.join(ROOT, "build", "bin", "ssc")
+SSC = ssc_runner.SSC
 PRM = os.path.join(HERE, "forearm_layers_axisymmetric.prm")
 # o-grid (cells around, edge cell size mm, radial grading), coarse to fine
 SSC_MESHES = [(8, 0.4, 1.8), (8, 0.2, 1.6), (8, 0.1, 1.4)]
@@ -189,36 +188,32 @@ def ssc_forces(mesh, depths, workdir, bonded=True, ssc=SSC, overrides=(),
     assert all(abs(d - step * (k + 1)) < 1e-12 for k, d in enumerate(depths))
     name = (f"{prefix}_{'bonded' if bonded else 'frictionless'}_n{n}_h{h}"
             f"_q{q}_d{depths[-1]}_s{len(depths)}")
-    settings = [f"Run/Output directory={workdir}", f"Run/Name={name}",
-                "Run/Write fields=false",
+    settings = ["Run/Write fields=false",
                 f"Mesh/O-grid/Cells around={n}",
                 f"Mesh/O-grid/Edge cell size={h}",
                 f"Mesh/O-grid/Radial grading={q}",
                 f"Punch/Depth={depths[-1]}",
                 f"Punch/Load steps={len(depths)}",
                 f"Punch/Contact={'bonded' if bonded else 'frictionless'}"]
-    args = [ssc, PRM]
-    for setting in settings + list(overrides):
-        args += ["-s", setting]
-    table = os.path.join(workdir, name, "force_displacement.csv")
+    folder = os.path.join(workdir, name)
+    table = os.path.join(folder, "force_displacement.csv")
     failed, wall = False, math.nan
     if not os.path.exists(table):  # else kept from an earlier run
         start = time.perf_counter()
         try:
-            failed = subprocess.run(args, capture_output=True,
-                                    timeout=SSC_TIMEOUT).returncode != 0
+            failed = not ssc_runner.run(PRM, settings + list(overrides),
+                                        workdir, name, ssc=ssc,
+                                        timeout=SSC_TIMEOUT).ok
         except subprocess.TimeoutExpired:
             failed = True
         wall = time.perf_counter() - start
     reached, forces = [], []
     if os.path.exists(table):
-        with open(table) as f:
-            for row in csv.DictReader(f):
-                reached.append(float(row["depth_mm"]))
-                forces.append(float(row["force_N"]))
-    summary = os.path.join(workdir, name, "summary.json")
-    dofs = json.load(open(summary))["dofs"] if os.path.exists(summary) \
-        else None
+        for row in ssc_runner.read_table(folder):
+            reached.append(float(row["depth_mm"]))
+            forces.append(float(row["force_N"]))
+    dofs = ssc_runner.read_summary(folder)["dofs"] \
+        if os.path.exists(os.path.join(folder, "summary.json")) else None
     return dict(depths=reached, forces=forces, time_s=wall, dofs=dofs,
                 stopped=failed)
 

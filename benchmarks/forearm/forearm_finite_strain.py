@@ -58,11 +58,13 @@ factorises its tangents), its cell loops on every core unless
 DEAL_II_NUM_THREADS says otherwise (the kept runs: one thread; poisson and
 friction were run with DEAL_II_NUM_THREADS=1 beside other jobs).
 """
-import csv, json, os, re, shutil, statistics, subprocess, sys, tempfile
+import csv, os, re, statistics, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(ROOT, "build", "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+ROOT = ssc_runner.ROOT
 SCENE = os.path.join(ROOT, "prm", "forearm_indentation.prm")
 HERLIN = os.path.join(ROOT, "prm", "forearm_indentation_herlin2014.prm")
 OUT = os.path.join(HERE, "results")
@@ -121,17 +123,12 @@ def run(prm, name, overrides):
     summary_file = os.path.join(folder, "summary.json")
     if not os.path.exists(summary_file) and \
             not os.path.exists(os.path.join(folder, "log.txt")):
-        with tempfile.TemporaryDirectory() as tmp:
-            args = ["mpirun", "-np", str(RANKS), SSC, prm,
-                    "-s", f"Run/Output directory={tmp}",
-                    "-s", "Run/Name=run"]
-            for key, value in {**BASE, **overrides}.items():
-                args += ["-s", f"{key}={value}"]
-            env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-                       OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        with ssc_runner.scratch() as tmp:
             print("running", name, flush=True)
-            result = subprocess.run(args, env=env, capture_output=True,
-                                    text=True)
+            # through mpirun with its default binding of the ranks to cores
+            # (bind=True), as the kept runs were made
+            result = ssc_runner.run(prm, {**BASE, **overrides}, tmp, "run",
+                                    ranks=RANKS, bind=True)
             os.makedirs(folder, exist_ok=True)
             if result.returncode != 0:
                 # kept: the load steps it finished still count
@@ -140,12 +137,11 @@ def run(prm, name, overrides):
                 print(f"  {name} failed (exit {result.returncode}); "
                       f"log in {folder}", flush=True)
                 return stopped_run(folder)
-            for f in ["summary.json", "force_displacement.csv"]:
-                shutil.copy(os.path.join(tmp, "run", f), folder)
+            ssc_runner.keep(result.folder, folder,
+                            ["summary.json", "force_displacement.csv"])
     if not os.path.exists(summary_file):
         return stopped_run(folder)
-    with open(summary_file) as f:
-        return json.load(f)
+    return ssc_runner.read_summary(folder)
 
 
 def stopped_run(folder):

@@ -12,11 +12,13 @@ and solve seconds, Newton iterations, depths) and scene_speed.png.
 
     /usr/bin/python3 benchmarks/forearm/scene_speed.py [--plot-only]
 """
-import csv, json, os, subprocess, sys, tempfile
+import csv, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(ROOT, "build", "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+ROOT = ssc_runner.ROOT
 SCENE = os.path.join(ROOT, "prm", "forearm_indentation.prm")
 OUT = os.path.join(HERE, "results")
 CSV = os.path.join(OUT, "scene_speed.csv")
@@ -33,19 +35,16 @@ def run(septa_points, threads):
     env.pop("DEAL_II_NUM_THREADS", None)
     if threads is not None:
         env["DEAL_II_NUM_THREADS"] = str(threads)
-    with tempfile.TemporaryDirectory() as tmp:
-        args = [SSC, SCENE, "-s", f"Run/Output directory={tmp}",
-                "-s", "Run/Name=run", "-s", "Run/Write fields=false",
-                "-s", "Punch/Section=false", "-s", "Punch/Profile length=0",
-                "-s", f"Punch/Forces={FORCES}",
-                "-s", "Punch/Depth uncertainty=",
-                "-s", f"Embedded/Septa/Quadrature points={septa_points}"]
-        result = subprocess.run(args, capture_output=True, text=True,
-                                env=env)
-        if result.returncode != 0:
+    with ssc_runner.scratch() as tmp:
+        result = ssc_runner.run(
+            SCENE, ["Run/Write fields=false", "Punch/Section=false",
+                    "Punch/Profile length=0", f"Punch/Forces={FORCES}",
+                    "Punch/Depth uncertainty=",
+                    f"Embedded/Septa/Quadrature points={septa_points}"],
+            tmp, "run", env=env)
+        if not result.ok:
             sys.exit(result.stdout + result.stderr)
-        with open(os.path.join(tmp, "run", "summary.json")) as f:
-            return json.load(f)
+        return result.summary()
 
 
 def measure():

@@ -9,11 +9,12 @@ benchmarks/forearm_linear/results/embedding_cost.csv and .png.
 
     /usr/bin/python3 benchmarks/forearm_linear/embedding_cost.py
 """
-import csv, json, os, subprocess, tempfile
+import csv, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(ROOT, "build", "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
 PRM = os.path.join(HERE, "forearm_punch.prm")
 OUT = os.path.join(HERE, "results")
 CASES = [("layers only", {"Microstructure/Lobules": "false",
@@ -29,12 +30,9 @@ FIELDS = ["case", "dofs", "septa_triangles", "septa_points", "ligament_points",
 
 
 def run(label, overrides, folder):
-    args = [SSC, PRM, "-s", f"Run/Output directory={folder}"]
-    for key, value in overrides.items():
-        args += ["-s", f"{key}={value}"]
-    subprocess.run(args, check=True, capture_output=True)
-    with open(os.path.join(folder, "forearm_punch", "summary.json")) as f:
-        s = json.load(f)
+    # the run's name is the prm's (forearm_punch)
+    ssc_runner.run(PRM, overrides, folder, check=True)
+    s = ssc_runner.read_summary(os.path.join(folder, "forearm_punch"))
     e, t = s["embedded"], s["timings"]
     points = e.get("septa_quadrature_points", 0) + \
         e.get("ligament_quadrature_points", 0)
@@ -52,7 +50,7 @@ def run(label, overrides, folder):
 
 def main():
     rows = []
-    with tempfile.TemporaryDirectory() as folder:
+    with ssc_runner.scratch() as folder:
         for label, overrides in CASES:
             rows.append(run(label, overrides, folder))
             print(f"{label:26s} {rows[-1]['cg_iterations']:4d} CG, "

@@ -21,11 +21,13 @@ and forearm_truncation.csv.
     /usr/bin/python3 benchmarks/forearm_linear/forearm_speed_vs_error.py
         [--plot-only]
 """
-import csv, json, math, os, subprocess, sys, tempfile
+import csv, math, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(ROOT, "build", "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+ROOT = ssc_runner.ROOT
 PRM = os.path.join(ROOT, "prm", "forearm_indentation_linear.prm")
 OUT = os.path.join(HERE, "results")
 BASE = {"Run/Write fields": "false", "Punch/Control": "displacement",
@@ -74,20 +76,10 @@ FIELDS = ["model", "discretisation", "level", "ranks", "dofs", "cells",
 
 
 def run(overrides, folder, name, ranks=1):
-    args = (["mpirun", "-np", str(ranks)] if ranks > 1 else []) + \
-        [SSC, PRM, "-s", f"Run/Output directory={folder}",
-         "-s", f"Run/Name={name}"]
-    for key, value in {**BASE, **overrides}.items():
-        args += ["-s", f"{key}={value}"]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               # mpirun binds each job's ranks to the first cores: two
-               # jobs at once would share one core
-               OMPI_MCA_hwloc_base_binding_policy="none")
-    subprocess.run(args, check=True, capture_output=True, env=env,
-                   timeout=1800)
-    with open(os.path.join(folder, name, "summary.json")) as f:
-        return json.load(f)
+    # mpirun (its ranks not bound to cores) only for several ranks
+    return ssc_runner.run(PRM, {**BASE, **overrides}, folder, name,
+                          ranks=ranks if ranks > 1 else None, check=True,
+                          timeout=1800).summary()
 
 
 def richardson(values):
@@ -154,7 +146,7 @@ def main():
                  os.path.join(OUT, "forearm_speed_vs_error.png"))
         return
     rows = []
-    with tempfile.TemporaryDirectory() as folder:
+    with ssc_runner.scratch() as folder:
         for model, label, overrides, levels in CONFIGURATIONS:
             for level in levels:
                 o = {**overrides,

@@ -33,18 +33,17 @@ growth_sensitivity.csv and the tornado plot growth_sensitivity.png.
 """
 import argparse
 import csv
-import json
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
-import time
 from concurrent.futures import ThreadPoolExecutor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(ROOT, "build", "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+ROOT = ssc_runner.ROOT
 OUT = os.path.join(HERE, "results")
 RUNS = os.path.join(OUT, "runs")
 SCENES = {"buttock": "buttock_cellulite", "cheek_sat": "cheek_injection_sat",
@@ -110,28 +109,21 @@ def run_case(case, scene, overrides):
         return None
     if not os.path.exists(kept):
         work = tempfile.mkdtemp(prefix="growth_")
-        command = [SSC, os.path.join(ROOT, "prm", scene + ".prm"),
-                   "-s", f"Run/Output directory={work}",
-                   "-s", f"Run/Name={case}", "-s", "Run/Write fields=false"]
-        for key, value in overrides.items():
-            command += ["-s", f"{key}={value}"]
-        start = time.time()
-        result = subprocess.run(command, capture_output=True, text=True)
+        result = ssc_runner.run(
+            os.path.join(ROOT, "prm", scene + ".prm"),
+            {"Run/Write fields": "false", **overrides}, work, case)
         print(f"{case}: exit status {result.returncode} after "
-              f"{time.time() - start:.0f} s", flush=True)
-        if result.returncode != 0:
+              f"{result.wall_s:.0f} s", flush=True)
+        if not result.ok:
             print(result.stdout[-1500:], result.stderr[-1500:],
                   file=sys.stderr)
-            shutil.rmtree(work)
+            ssc_runner.remove(work)
             return None
-        os.makedirs(os.path.join(RUNS, case), exist_ok=True)
-        shutil.copy(os.path.join(work, case, "summary.json"), kept)
-        # the surface itself, for the pictures (not kept in git)
-        shutil.copy(os.path.join(work, case, "elevation.csv"),
-                    os.path.join(RUNS, case))
-        shutil.rmtree(work)
-    with open(kept) as f:
-        return json.load(f)
+        # the summary, and the surface itself for the pictures
+        ssc_runner.keep(result.folder, os.path.join(RUNS, case),
+                        ["summary.json", "elevation.csv"])
+        ssc_runner.remove(work)
+    return ssc_runner.read_summary(os.path.join(RUNS, case))
 
 
 def cases():

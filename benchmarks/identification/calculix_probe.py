@@ -120,13 +120,10 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(
-    os.path.abspath(__file__))), "common"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 from calculix_punch import (CCX, _brick20, _element_sets, _fmt,  # noqa: E402
                             _lines, run_ccx, total_forces)
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
 
 # the problem (mm, N, MPa)
 HALF_X, HALF_Y = 52.5, 34.0          # block half sizes

@@ -22,12 +22,13 @@ benchmarks/identification/results/probe_convergence.csv and .png.
     /usr/bin/python3 benchmarks/identification/probe_convergence.py
         [--nu 0.49 0.3] [--plot-only]
 """
-import argparse, csv, json, os, subprocess, tempfile, time
+import argparse, csv, os, sys, time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
-                   "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+ROOT = ssc_runner.ROOT
 PRM = os.path.join(ROOT, "prm", "probe_indentation.prm")
 OUT = os.path.join(HERE, "results")
 LAYERS = ["skin", "fat", "muscle"]
@@ -60,26 +61,26 @@ def reference(nu):
 def run_ssc(nu, mesh, folder):
     degree, h, edge, grading, across = mesh
     name = f"q{degree}_h{h}_e{edge}_g{grading}_{'-'.join(map(str, across))}_nu{nu}"
-    args = [SSC, PRM, "-s", f"Run/Output directory={folder}",
-            "-s", f"Run/Name={name}", "-s", "Run/Write fields=false",
-            "-s", "Punch/Section=false", "-s", "Punch/Profile length=0",
-            "-s", "Punch/Control=displacement", "-s", "Punch/Depth=1",
-            "-s", f"Elasticity/Degree={degree}",
-            "-s", f"Mesh/Cell size={h}", "-s", f"Mesh/Grading ratio={grading}",
-            "-s", f"Mesh/Core edge cell size={edge}",
-            "-s", "Mesh/Symmetry=quarter",
-            # CalculiX's block (prm/probe_indentation.prm now has a larger one)
-            "-s", "Mesh/Patch length x=105", "-s", "Mesh/Patch length y=68"]
+    settings = ["Run/Write fields=false",
+                "Punch/Section=false", "Punch/Profile length=0",
+                "Punch/Control=displacement", "Punch/Depth=1",
+                f"Elasticity/Degree={degree}",
+                f"Mesh/Cell size={h}", f"Mesh/Grading ratio={grading}",
+                f"Mesh/Core edge cell size={edge}",
+                "Mesh/Symmetry=quarter",
+                # CalculiX's block (prm/probe_indentation.prm now has a
+                # larger one)
+                "Mesh/Patch length x=105", "Mesh/Patch length y=68"]
     for layer, n in zip(LAYERS, across):
-        args += ["-s", f"Layer stack/{layer}/Material model=linear",
-                 "-s", f"Layer stack/{layer}/Young's modulus={MODULI[layer]}",
-                 "-s", f"Layer stack/{layer}/Poisson's ratio={nu}",
-                 "-s", f"Layer stack/{layer}/Cells across={n}",
-                 "-s", f"Layer stack/{layer}/Grading=1"]
+        settings += [f"Layer stack/{layer}/Material model=linear",
+                     f"Layer stack/{layer}/Young's modulus={MODULI[layer]}",
+                     f"Layer stack/{layer}/Poisson's ratio={nu}",
+                     f"Layer stack/{layer}/Cells across={n}",
+                     f"Layer stack/{layer}/Grading=1"]
     start = time.time()
-    subprocess.run(args, check=True, capture_output=True)
+    done = ssc_runner.run(PRM, settings, folder, name, check=True)
     wall = time.time() - start
-    s = json.load(open(os.path.join(folder, name, "summary.json")))
+    s = done.summary()
     strains = s["layer_strain_under_centre_per_step"]
     return dict(degree=degree, cell_size=h, edge_size=edge, grading=grading,
                 cells_across="/".join(map(str, across)), nu=nu,
@@ -126,7 +127,7 @@ def main():
             OUT, "probe_convergence.csv")))))
         return
     rows = []
-    with tempfile.TemporaryDirectory() as folder:
+    with ssc_runner.scratch() as folder:
         for nu in args.nu:
             ref = reference(nu)
             for mesh in MESHES:

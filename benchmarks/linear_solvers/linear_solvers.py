@@ -17,12 +17,13 @@ rows replace those of the same method, degree, nu and level in the CSV.
     /usr/bin/python3 benchmarks/linear_solvers/linear_solvers.py
         [--methods M ...] [--degrees 1 2] [--plot-only]
 """
-import argparse, csv, json, os, subprocess, sys, tempfile
+import argparse, csv, os, subprocess, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
-                   "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+ROOT = ssc_runner.ROOT
 PRM = os.path.join(ROOT, "prm", "punch.prm")
 OUT = os.path.join(HERE, "results")
 LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
@@ -46,26 +47,22 @@ def run(method, degree, nu, level, folder):
                            "Elasticity/Linear solver/Preconditioner=cholesky"]
               }.get(method, [f"Elasticity/Linear solver/Method={method}",
                              "Elasticity/Linear solver/Preconditioner=amg"])
-    args = [SSC, PRM, "-s", f"Run/Output directory={folder}",
-            "-s", f"Run/Name={name}", "-s", "Run/Write fields=false",
-            "-s", solver[0], "-s", solver[-1],
-            "-s", "Elasticity/Linear solver/Max iterations=2000",
-            "-s", f"Elasticity/Degree={degree}",
-            "-s", f"Mesh/Region of interest/Local refinements={level}"]
-    args += [a for entry in BOX_MESH for a in ("-s", entry)]
-    for layer in LAYERS:
-        args += ["-s", f"Layer stack/{layer}/Poisson's ratio={nu}"]
+    settings = ["Run/Write fields=false", solver[0], solver[-1],
+                "Elasticity/Linear solver/Max iterations=2000",
+                f"Elasticity/Degree={degree}",
+                f"Mesh/Region of interest/Local refinements={level}"]
+    settings += BOX_MESH
+    settings += [f"Layer stack/{layer}/Poisson's ratio={nu}"
+                 for layer in LAYERS]
     try:
-        done = subprocess.run(args, capture_output=True, text=True,
-                              timeout=900)
+        done = ssc_runner.run(PRM, settings, folder, name, timeout=900)
     except subprocess.TimeoutExpired:
         print(f"{name}: stopped after 900 s", flush=True)
         return None
-    if done.returncode != 0:
+    if not done.ok:
         print(f"{name} failed: {done.stderr.strip()[:200]}", flush=True)
         return None
-    with open(os.path.join(folder, name, "summary.json")) as f:
-        s = json.load(f)
+    s = done.summary()
     t = s["timings"]
     row = dict(method=method, degree=degree, nu=nu, level=level,
                dofs=s["dofs"], iterations=s["solver"]["linear_iterations"],
@@ -135,7 +132,7 @@ def main():
     if not args.plot_only:
         done = set()
         new_rows = []
-        with tempfile.TemporaryDirectory() as folder:
+        with ssc_runner.scratch() as folder:
             for degree in args.degrees:
                 for level in LEVELS[degree]:
                     for nu in (0.3, 0.49, 0.4999):

@@ -2,7 +2,7 @@
 """Time and memory to build 10^3, 10^4 and 10^5 lobules with 30 Lloyd
 iterations (clipped Voronoi tessellation with CGAL, one core).
 
-Builds and runs build/benchmarks/lobule_scaling, writes
+Builds and runs build/benchmarks/lobule_scaling ($SSC_BUILD_DIR if set), writes
 benchmarks/lobule_scaling/results/lobule_scaling.csv and .png.
 
     /usr/bin/python3 benchmarks/lobule_scaling/lobule_scaling.py [--max 100000]
@@ -10,8 +10,10 @@ benchmarks/lobule_scaling/results/lobule_scaling.csv and .png.
 import csv, io, os, subprocess, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-BUILD = os.path.join(ROOT, "build")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+BUILD = ssc_runner.build_dir()
 OUT = os.path.join(HERE, "results")
 
 

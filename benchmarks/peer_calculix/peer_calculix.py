@@ -30,15 +30,14 @@ per code, the fastest run within 1 % and within 0.3 %.
     /usr/bin/python3 benchmarks/peer_calculix/peer_calculix.py
         [--nu 0.3 0.49 0.4999] [--plot-only]
 """
-import argparse, csv, json, os, subprocess, sys, tempfile, time
+import argparse, csv, os, sys, tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(ROOT, "benchmarks", "common"))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import calculix_punch as cp  # noqa: E402
+import ssc_runner  # noqa: E402
 
-SSC = os.path.join(os.environ.get("SSC_BUILD_DIR", os.path.join(ROOT, "build")),
-                   "bin", "ssc")
+ROOT = ssc_runner.ROOT
 PRM = os.path.join(ROOT, "prm", "punch.prm")
 OUT = os.path.join(HERE, "results")
 LAYERS = ["skin", "SAT", "SM", "DAT", "deep"]
@@ -55,39 +54,29 @@ SSC_MESHES = [(2, "mixed", 8, 0.8, 2.0), (2, "mixed", 8, 0.3, 1.8),
 
 def run_ssc(nu, degree, formulation, n, edge, grading, folder, reference):
     name = f"ssc_q{degree}{formulation[0]}_n{n}_h{edge}_q{grading}_nu{nu}"
-    args = [SSC, PRM, "-s", f"Run/Output directory={folder}",
-            "-s", f"Run/Name={name}", "-s", "Run/Write fields=false",
-            "-s", "Mesh/Layout=o-grid",
-            "-s", "Mesh/O-grid/Outer boundary=circle",
-            "-s", f"Mesh/O-grid/Cells around={n}",
-            "-s", f"Mesh/O-grid/Edge cell size={edge}",
-            "-s", f"Mesh/O-grid/Radial grading={grading}",
-            "-s", "Mesh/Region of interest/Local refinements=0",
-            "-s", "Elasticity/Sides=fixed",
-            "-s", f"Elasticity/Degree={degree}",
-            "-s", f"Elasticity/Formulation={formulation}",
-            "-s", "Elasticity/Linear solver/Preconditioner=cholesky"]
-    for layer in LAYERS:
-        args += ["-s", f"Layer stack/{layer}/Poisson's ratio={nu}"]
-    # wait4 needs the child unreaped: Popen.wait() would reap it
-    errors = os.path.join(folder, name + ".err")
-    with open(errors, "w") as err:
-        start = time.perf_counter()
-        process = subprocess.Popen(args, stdout=subprocess.DEVNULL,
-                                   stderr=err)
-        _, status, usage = os.wait4(process.pid, 0)
-        wall = time.perf_counter() - start
-    if os.waitstatus_to_exitcode(status) != 0:
-        with open(errors) as err:
-            print(f"{name} failed: {err.read()[:300]}")
+    settings = ["Run/Write fields=false", "Mesh/Layout=o-grid",
+                "Mesh/O-grid/Outer boundary=circle",
+                f"Mesh/O-grid/Cells around={n}",
+                f"Mesh/O-grid/Edge cell size={edge}",
+                f"Mesh/O-grid/Radial grading={grading}",
+                "Mesh/Region of interest/Local refinements=0",
+                "Elasticity/Sides=fixed",
+                f"Elasticity/Degree={degree}",
+                f"Elasticity/Formulation={formulation}",
+                "Elasticity/Linear solver/Preconditioner=cholesky"]
+    settings += [f"Layer stack/{layer}/Poisson's ratio={nu}"
+                 for layer in LAYERS]
+    # wall time and peak resident memory of the ssc process (os.wait4)
+    done = ssc_runner.run(PRM, settings, folder, name)
+    if not done.ok:
+        print(f"{name} failed: {done.stderr[:300]}")
         return None
-    with open(os.path.join(folder, name, "summary.json")) as f:
-        s = json.load(f)
+    s = done.summary()
     K = s["stiffness_N_per_mm"]
     return dict(code="ssc", discretisation=f"Q{degree} {formulation}",
                 nu=nu, mesh=f"n={n} h={edge} q={grading}", dofs=s["dofs"],
                 K_N_per_mm=K, relative_error=K / reference - 1,
-                wall_s=wall, memory_MB=usage.ru_maxrss / 1024)
+                wall_s=done.wall_s, memory_MB=done.max_rss_MB)
 
 
 def run_calculix(nu, mesh, folder, reference):

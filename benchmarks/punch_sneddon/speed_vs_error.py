@@ -11,11 +11,12 @@ benchmarks/punch_sneddon/results/speed_vs_error.csv and .png.
 
 --plot-only redraws the PNG from the last CSV.
 """
-import csv, json, os, subprocess, sys, tempfile
+import csv, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-SSC = os.path.join(ROOT, "build", "bin", "ssc")
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
 PRM = os.path.join(HERE, "punch_sneddon.prm")
 OUT = os.path.join(HERE, "results")
 # levels = local refinements towards the punch edge (the base cell is 160 mm)
@@ -37,20 +38,17 @@ CONFIGURATIONS = [(nu, degree, formulation, "smoothed")
 
 def run(nu, degree, formulation, amg, level, folder):
     name = f"nu{nu}_q{degree}_{formulation}_{amg}_l{level}"
-    args = [SSC, PRM, "-s", f"Run/Output directory={folder}",
-            "-s", f"Run/Name={name}",
-            "-s", f"Layer stack/block/Poisson's ratio={nu}",
-            "-s", f"Elasticity/Degree={degree}",
-            "-s", f"Elasticity/Formulation={formulation}",
-            "-s", "Elasticity/Linear solver/Smoothed aggregation=" +
-            ("true" if amg == "smoothed" else "false"),
-            "-s", f"Mesh/Region of interest/Local refinements={level}"]
-    done = subprocess.run(args, capture_output=True, text=True, timeout=900)
-    if done.returncode != 0:
+    overrides = {"Layer stack/block/Poisson's ratio": nu,
+                 "Elasticity/Degree": degree,
+                 "Elasticity/Formulation": formulation,
+                 "Elasticity/Linear solver/Smoothed aggregation":
+                 "true" if amg == "smoothed" else "false",
+                 "Mesh/Region of interest/Local refinements": level}
+    done = ssc_runner.run(PRM, overrides, folder, name, timeout=900)
+    if not done.ok:
         print(f"{name} failed:\n{done.stderr}", flush=True)
         return None
-    with open(os.path.join(folder, name, "summary.json")) as f:
-        s = json.load(f)
+    s = done.summary()
     t = s["timings"]
     k, ref = s["stiffness_N_per_mm"], s["half_space_stiffness_N_per_mm"]
     mem, mem0 = s["memory_MB"], s["memory_at_start_MB"]
@@ -119,7 +117,7 @@ def main():
     quick = "--quick" in sys.argv
     os.makedirs(OUT, exist_ok=True)
     rows = []
-    with tempfile.TemporaryDirectory() as folder:
+    with ssc_runner.scratch() as folder:
         for (nu, degree, formulation, amg) in CONFIGURATIONS:
             if quick and nu != 0.3:
                 continue
