@@ -169,6 +169,17 @@ main(int argc, char **argv)
         std::string(valid_stack) +
           "subsection Layer stack\n  subsection fat\n"
           "    set Material model = Mooney-Rivlin\n  end\nend\n");
+  check("volumetric energy where round 2 had it",
+        std::string(valid_stack) +
+          "subsection Layer stack\n  subsection fat\n"
+          "    set Material model = neo-Hookean\n"
+          "    set Volumetric energy = quadratic\n  end\nend\n");
+  check("a law's parameter out of its range",
+        std::string(valid_stack) +
+          "subsection Layer stack\n  subsection fat\n"
+          "    set Material model = neo-Hookean\n"
+          "    subsection neo-Hookean\n"
+          "      set Volumetric energy = cubic\n    end\n  end\nend\n");
   const std::string growth = std::string(valid_stack) +
                              "subsection Run\n  set Scene = growth\n"
                              "  set Output directory = results\nend\n";

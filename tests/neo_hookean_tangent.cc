@@ -130,10 +130,10 @@ main(int argc, char **argv)
       for (unsigned int l = 0; l < 2; ++l)
         layers.set_model(l,
                          variant.find("corotational") != std::string::npos ?
-                           ssc::MaterialModel::corotational :
+                           std::string("corotational") :
                          variant.find("linear") == 0 ?
-                           ssc::MaterialModel::linear :
-                           ssc::MaterialModel::neo_hookean);
+                           std::string("linear") :
+                           std::string("neo-Hookean"));
       const bool   tension_only = variant.find("tension") != std::string::npos;
       const bool   growth       = variant.find("growth") != std::string::npos;
       const bool   on_faces     = variant.find("faces") != std::string::npos;
@@ -282,13 +282,13 @@ main(int argc, char **argv)
             zero = 0;
             elasticity.field().set_solution(zero);
             elasticity.assemble(false);
-            const double reference = elasticity.rhs().l2_norm();
+            const double reference = elasticity.linearised().rhs.l2_norm();
             elasticity.field().set_solution(rigid);
             elasticity.assemble(false);
             deallog << variant << ": rigid rotation of the prestressed "
                     << "state, |r| changes by less than 1e-10 of it: "
-                    << (std::abs(elasticity.rhs().l2_norm() - reference) <
-                              1e-10 * reference &&
+                    << (std::abs(elasticity.linearised().rhs.l2_norm() -
+                                 reference) < 1e-10 * reference &&
                             reference > 0 ?
                           "yes" :
                           "no")
@@ -302,7 +302,8 @@ main(int argc, char **argv)
                     growth ? ": uniform growth 0.4, rotated expansion" :
                              ": rigid rotation")
                 << ", largest |r| / largest |K| below 1e-10: "
-                << (elasticity.rhs().linfty_norm() / largest_entry < 1e-10 ?
+                << (elasticity.linearised().rhs.linfty_norm() / largest_entry <
+                        1e-10 ?
                       "yes" :
                       "no")
                 << std::endl;

@@ -13,8 +13,8 @@
 #include <iostream>
 #include <random>
 
+#include <ssc/contact/rigid_punch_contact.h>
 #include <ssc/mechanics/elastic_system.h>
-#include <ssc/mechanics/rigid_punch_contact.h>
 #include <ssc/mesh/background_mesh.h>
 
 #include "quiet_elasticity.h"
@@ -74,7 +74,7 @@ namespace
     layers.add_layer("skin", ssc::LayerKind::skin, "0.5", 0.02, 0.45, 1);
     layers.add_layer("fat", ssc::LayerKind::SAT, "1.5", 0.001, 0.49, 1);
     for (unsigned int l = 0; l < 2; ++l)
-      layers.set_model(l, ssc::MaterialModel::neo_hookean);
+      layers.set_model(l, std::string("neo-Hookean"));
     const ssc::MeshParameters mesh_parameters = uniform_patch(4, 1);
     ssc::BackgroundMesh       mesh(layers, mesh_parameters, MPI_COMM_WORLD);
     mesh.build();

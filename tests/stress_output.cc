@@ -51,13 +51,13 @@ namespace
 
   /// Principal Cauchy stress i of @p model, by hand.
   double
-  closed_form(const ssc::MaterialModel model,
-              const unsigned int       i,
-              const double             gamma)
+  closed_form(const std::string &model,
+              const unsigned int i,
+              const double       gamma)
   {
     const double mu = E / (2 * (1 + nu)), kappa = E / (3 * (1 - 2 * nu));
     const double J = stretch[0] * stretch[1] * stretch[2];
-    if (model == ssc::MaterialModel::linear)
+    if (model == std::string("linear"))
       {
         const double trace = stretch[0] + stretch[1] + stretch[2] - 3.;
         return 2 * mu * (stretch[i] - 1. - trace / 3.) + kappa * trace;
@@ -65,7 +65,7 @@ namespace
     // U'(J) of U = kappa/4 (J^2 - 1 - 2 ln J), at J / gamma
     const double pressure = 0.5 * kappa * (J / gamma - gamma / J);
     double       dW       = 0; // d W_iso / d lambda_i
-    if (model == ssc::MaterialModel::neo_hookean)
+    if (model == std::string("neo-Hookean"))
       {
         // W_iso = mu/2 (J^{-2/3} sum lambda_k^2 - 3)
         double sum = 0;
@@ -90,11 +90,11 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
   for (const auto &[model, growth] :
-       std::vector<std::pair<ssc::MaterialModel, double>>{
-         {ssc::MaterialModel::linear, 0.},
-         {ssc::MaterialModel::corotational, 0.},
-         {ssc::MaterialModel::neo_hookean, 0.},
-         {ssc::MaterialModel::neo_hookean, 0.3}})
+       std::vector<std::pair<std::string, double>>{
+         {std::string("linear"), 0.},
+         {std::string("corotational"), 0.},
+         {std::string("neo-Hookean"), 0.},
+         {std::string("neo-Hookean"), 0.3}})
     {
       ssc::LayerStack layers;
       layers.add_layer("block", ssc::LayerKind::deep, "2", E, nu, 2);
@@ -116,7 +116,7 @@ main(int argc, char **argv)
                                [growth](const Point<3> &, const unsigned int) {
                                  return growth;
                                });
-      if (model == ssc::MaterialModel::linear)
+      if (model == std::string("linear"))
         system.solve_linear();
       else
         {
@@ -152,7 +152,7 @@ main(int argc, char **argv)
               scale = std::max(scale, std::abs(exact));
             }
       std::ostringstream line;
-      line << ssc::to_string(model) << ", growth " << growth
+      line << model << ", growth " << growth
            << ": sigma_xx = " << std::setprecision(6)
            << 1e3 * closed_form(model, 0, 1. + growth)
            << " kPa; written cell stresses equal the closed form to 1e-8: "

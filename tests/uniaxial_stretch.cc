@@ -36,17 +36,17 @@ using namespace dealii;
 /// Force on the face x = 1 (area 4 mm^2) for stretch lambda of a block of
 /// Young's modulus E and Poisson's ratio nu.
 double
-closed_form_force(const ssc::MaterialModel model,
-                  const double             E,
-                  const double             nu,
-                  const double             lambda)
+closed_form_force(const std::string &model,
+                  const double       E,
+                  const double       nu,
+                  const double       lambda)
 {
   const double mu = E / (2 * (1 + nu)), kappa = E / (3 * (1 - 2 * nu));
   const auto   stress_yy = [&](const double t, double &tau_xx) {
     const double J          = lambda * t * t;
     const double J_pressure = J * 0.5 * kappa * (J - 1 / J);
     double       shear_xx, shear_yy;
-    if (model == ssc::MaterialModel::neo_hookean)
+    if (model == std::string("neo-Hookean"))
       {
         const double scale = mu * std::pow(J, -2. / 3.);
         shear_xx =
@@ -88,7 +88,7 @@ main(int argc, char **argv)
   ssc::BackgroundMesh       mesh(layers, mesh_parameters, MPI_COMM_WORLD);
   mesh.build();
   for (const auto model :
-       {ssc::MaterialModel::neo_hookean, ssc::MaterialModel::corotational})
+       {std::string("neo-Hookean"), std::string("corotational")})
     for (const auto formulation :
          {ssc::Formulation::displacement, ssc::Formulation::mixed})
       for (const double lambda : {1.5, 0.7})
@@ -135,9 +135,9 @@ main(int argc, char **argv)
           const double force    = elasticity.reaction(1)[0];
           const double expected = closed_form_force(model, 0.01, 0.45, lambda);
           std::ostringstream line;
-          line << ssc::to_string(model) << ", " << ssc::to_string(formulation)
-               << ", stretch " << lambda << ": force " << std::setprecision(6)
-               << force << " N, closed form " << expected
+          line << model << ", " << ssc::to_string(formulation) << ", stretch "
+               << lambda << ": force " << std::setprecision(6) << force
+               << " N, closed form " << expected
                << " N, relative difference below 1e-8: "
                << (std::abs(force / expected - 1) < 1e-8 ? "yes" : "no");
           deallog << line.str() << std::endl;

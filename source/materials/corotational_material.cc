@@ -101,4 +101,15 @@ namespace ssc
                  2. * std::pow(J, -1. / 3.) * trace(U) + 3.) +
            volumetric_energy.volumetric_energy(J);
   }
+
+
+  namespace
+  {
+    const bool registered =
+      register_material<CorotationalMaterial, VolumetricEnergyParameters>(
+        "corotational",
+        "the linear law on the rotated strain U - I of F = R U (finite "
+        "rotations, small stretches; hyperelastic, so Newton's tangent is "
+        "exact).");
+  }
 } // namespace ssc

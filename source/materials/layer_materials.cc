@@ -1,34 +1,100 @@
-#include <ssc/materials/corotational_material.h>
 #include <ssc/materials/layer_materials.h>
-#include <ssc/materials/linear_elastic_material.h>
-#include <ssc/materials/neo_hookean_material.h>
 
 namespace ssc
 {
-  std::unique_ptr<const Material>
-  make_material(const Layer &layer)
+  LayerLawParameters::LayerLawParameters()
   {
-    const IsotropicModuli moduli(layer.youngs_modulus, layer.poisson_ratio);
-    switch (layer.model)
-      {
-        case MaterialModel::linear:
-          return std::make_unique<LinearElasticMaterial>(moduli);
-        case MaterialModel::corotational:
-          return std::make_unique<CorotationalMaterial>(
-            moduli, layer.volumetric_energy);
-        case MaterialModel::neo_hookean:
-          return std::make_unique<NeoHookeanMaterial>(moduli,
-                                                      layer.volumetric_energy);
-      }
-    AssertThrow(false, ExcMessage("Unknown material model."));
-    return nullptr;
+    for (const std::string &law : MaterialRegistry::names())
+      defaults[law] = MaterialRegistry::get(law, "").make_parameters();
   }
 
 
-  LayerMaterials::LayerMaterials(const LayerStack &layers)
+  void
+  LayerLawParameters::add_parameters(
+    ParameterHandler               &prm,
+    const std::vector<std::string> &layer_names)
+  {
+    prm.enter_subsection("Layer stack");
+    for (const std::string &layer : layer_names)
+      {
+        prm.enter_subsection(layer);
+        for (const std::string &law : MaterialRegistry::names())
+          {
+            auto parameters = MaterialRegistry::get(law, "").make_parameters();
+            if (parameters->has_entries())
+              {
+                prm.enter_subsection(law);
+                parameters->add_parameters(prm);
+                prm.leave_subsection();
+              }
+            per_layer[layer][law] = std::move(parameters);
+          }
+        prm.add_parameter(
+          "Volumetric energy",
+          moved_volumetric_energy[layer],
+          "Moved: the finite-strain laws own it now, as 'Layer "
+          "stack/<layer>/<law>/Volumetric energy' (e.g. subsection "
+          "neo-Hookean). Setting it here is an error that says so.",
+          Patterns::Anything());
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+  void
+  LayerLawParameters::check(const LayerStack &layers) const
+  {
+    for (const auto &[layer, value] : moved_volumetric_energy)
+      AssertThrow(value.empty(),
+                  ExcMessage("'Layer stack/" + layer +
+                             "/Volumetric energy' has moved into the law "
+                             "that owns it: write it as 'Layer stack/" +
+                             layer +
+                             "/<law>/Volumetric energy', e.g. "
+                             "subsection " +
+                             layer +
+                             " / subsection neo-Hookean / set Volumetric "
+                             "energy = " +
+                             value + "."));
+    for (unsigned int l = 0; l < layers.n_layers(); ++l)
+      {
+        const Layer      &layer = layers.layer(l);
+        const std::string path  = "Layer stack/" + layer.name + "/";
+        MaterialRegistry::get(layer.material_model, path + "Material model");
+        of(layer.name, layer.material_model).check(path + layer.material_model);
+      }
+  }
+
+
+  const MaterialParameters &
+  LayerLawParameters::of(const std::string &layer, const std::string &law) const
+  {
+    const auto declared = per_layer.find(layer);
+    if (declared != per_layer.end() && declared->second.count(law) > 0)
+      return *declared->second.at(law);
+    MaterialRegistry::get(law, "Material model");
+    return *defaults.at(law);
+  }
+
+
+  std::unique_ptr<const Material>
+  make_material(const Layer &layer, const LayerLawParameters &laws)
+  {
+    const MaterialRegistry::Entry &entry =
+      MaterialRegistry::get(layer.material_model,
+                            "Layer stack/" + layer.name + "/Material model");
+    return entry.make_law(IsotropicModuli(layer.youngs_modulus,
+                                          layer.poisson_ratio),
+                          laws.of(layer.name, layer.material_model));
+  }
+
+
+  LayerMaterials::LayerMaterials(const LayerStack         &layers,
+                                 const LayerLawParameters &laws)
   {
     for (unsigned int l = 0; l < layers.n_layers(); ++l)
-      materials.push_back(make_material(layers.layer(l)));
+      materials.push_back(make_material(layers.layer(l), laws));
   }
 
 

@@ -40,4 +40,13 @@ namespace ssc
            reference_moduli.bulk_modulus * (trace(eps) - (gamma - 1.)) *
              unit_symmetric_tensor<3>();
   }
+
+
+  namespace
+  {
+    const bool registered = register_material<LinearElasticMaterial>(
+      "linear",
+      "small-strain isotropic elasticity (sigma = 2 mu dev eps + kappa tr eps "
+      "I), solved in one linear step.");
+  }
 } // namespace ssc

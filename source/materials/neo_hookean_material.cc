@@ -36,4 +36,14 @@ namespace ssc
              (std::pow(J, -2. / 3.) * scalar_product(F, F) - 3.) +
            volumetric_energy.volumetric_energy(J);
   }
+
+
+  namespace
+  {
+    const bool registered =
+      register_material<NeoHookeanMaterial, VolumetricEnergyParameters>(
+        "neo-Hookean",
+        "compressible neo-Hookean, mu/2 (J^{-2/3} I_1 - 3) + U(J), with the "
+        "small-strain moduli of E and nu (finite strain).");
+  }
 } // namespace ssc

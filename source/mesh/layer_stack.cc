@@ -168,25 +168,16 @@ namespace ssc
                           "the vertically elongated, palisade-like lobules of "
                           "the SAT, < 1 the flat lobules of the DAT.",
                           Patterns::Double(0.1, 10));
-        prm.add_parameter("Material model",
-                          layer.model,
-                          "linear: small-strain isotropic elasticity. "
-                          "corotational: the same law on the rotated strain "
-                          "U - I of the polar decomposition F = R U (finite "
-                          "rotations, small stretches; hyperelastic, so "
-                          "Newton's tangent is exact). "
-                          "neo-Hookean: compressible neo-Hookean (finite "
-                          "strain, isochoric/volumetric split with the same "
-                          "small-strain moduli); any nonlinear layer makes the "
-                          "scene solve with Newton's method and load steps.");
         prm.add_parameter(
-          "Volumetric energy",
-          layer.volumetric_energy,
-          "Finite-strain laws: U(J) = kappa/4 (J^2 - 1 - 2 ln J) "
-          "(logarithmic) or kappa/2 (J - 1)^2 (quadratic, the NEO HOOKE of "
-          "CalculiX and Abaqus with D1 = 2/kappa). Equal to second order "
-          "in J - 1; at nu = 0.49 a punch drives the fat far enough from J "
-          "= 1 for the choice to show.");
+          "Material model",
+          layer.material_model,
+          "The constitutive law of this layer, by name: linear (small strain), "
+          "or a finite-strain law (corotational, neo-Hookean, Saint "
+          "Venant-Kirchhoff, ...), each with the small-strain moduli above; "
+          "the laws and the parameters each owns are the subsections of this "
+          "section. Any finite-strain layer makes the scene solve with "
+          "Newton's method and load steps.",
+          Patterns::Anything());
         prm.add_parameter("Grading",
                           layer.grading,
                           "Ratio of successive cell heights from the top of "
@@ -363,16 +354,6 @@ namespace ssc
   {
     for (const auto &layer : layers)
       check_thickness(layer, x, y);
-  }
-
-
-  bool
-  LayerStack::nonlinear() const
-  {
-    for (const auto &layer : layers)
-      if (layer.model != MaterialModel::linear)
-        return true;
-    return false;
   }
 
 

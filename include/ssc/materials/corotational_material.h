@@ -2,6 +2,7 @@
 #define ssc_materials_corotational_material_h
 
 #include <ssc/materials/material.h>
+#include <ssc/materials/volumetric_energy_parameters.h>
 
 namespace ssc
 {
@@ -27,6 +28,13 @@ namespace ssc
   {
   public:
     using Material::Material;
+
+    /// The law of a layer with @p moduli and the @p parameters the law owns
+    /// (what the MaterialRegistry makes).
+    CorotationalMaterial(const IsotropicModuli            &moduli,
+                         const VolumetricEnergyParameters &parameters)
+      : Material(moduli, parameters.form)
+    {}
 
     Kinematics
     kinematics() const override

@@ -1,20 +1,84 @@
 #ifndef ssc_materials_layer_materials_h
 #define ssc_materials_layer_materials_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <ssc/materials/material.h>
+#include <ssc/materials/material_registry.h>
 #include <ssc/mesh/layer_stack.h>
 
 namespace ssc
 {
-  /// The law of @p layer (its Material model, E and nu): the one place that
-  /// turns a layer's parameters into a Material.
+  /**
+   * The parameters every registered law owns, per layer: the subsections
+   * "Layer stack/<layer>/<law>" of the prm file. Every law's subsection is
+   * declared for every layer (as ASPECT declares every plugin's
+   * parameters), so that switching a layer's "Material model" needs no
+   * other change; the chosen law's parameters are the ones used. A layer
+   * this object was not declared for (a stack built in code) gets each
+   * law's defaults.
+   */
+  class LayerLawParameters
+  {
+  public:
+    /// Every law's defaults (for layers that add_parameters() did not
+    /// declare).
+    LayerLawParameters();
+
+    /// The handler keeps references to the members: neither copied nor
+    /// moved.
+    LayerLawParameters(const LayerLawParameters &) = delete;
+    LayerLawParameters &
+    operator=(const LayerLawParameters &) = delete;
+
+    /// Declares, inside "Layer stack/<name>" for every name of
+    /// @p layer_names, one subsection per registered law that has
+    /// parameters, bound to this object; and the old place of "Volumetric
+    /// energy", to name its new one.
+    void
+    add_parameters(ParameterHandler               &prm,
+                   const std::vector<std::string> &layer_names);
+
+    /// Forgets the declared layers (before the handler is declared anew).
+    void
+    clear()
+    {
+      per_layer.clear();
+      moved_volumetric_energy.clear();
+    }
+
+    /// Throws, naming the parameter, unless every layer of @p layers names
+    /// a registered law whose parameters are consistent.
+    void
+    check(const LayerStack &layers) const;
+
+    /// The parameters of law @p law for the layer called @p layer.
+    const MaterialParameters &
+    of(const std::string &layer, const std::string &law) const;
+
+  private:
+    /// Per layer name, per law name.
+    std::map<std::string,
+             std::map<std::string, std::unique_ptr<MaterialParameters>>>
+      per_layer;
+    /// The defaults of every law (layers not declared).
+    std::map<std::string, std::unique_ptr<MaterialParameters>> defaults;
+    /// "Volumetric energy" given where round 2 had it, per layer.
+    std::map<std::string, std::string> moved_volumetric_energy;
+  };
+
+
+  /// The law of @p layer (its "Material model", E and nu) with the
+  /// parameters @p laws holds for it: the one place that turns a layer's
+  /// parameters into a Material.
   std::unique_ptr<const Material>
-  make_material(const Layer &layer);
+  make_material(const Layer &layer, const LayerLawParameters &laws = {});
 
   /**
    * The laws of all layers of a stack, indexed like the layers (the
@@ -24,13 +88,19 @@ namespace ssc
   class LayerMaterials
   {
   public:
-    explicit LayerMaterials(const LayerStack &layers);
+    LayerMaterials(const LayerStack &layers, const LayerLawParameters &laws);
 
     const Material &
     operator[](const types::material_id layer) const
     {
       AssertIndexRange(layer, materials.size());
       return *materials[layer];
+    }
+
+    unsigned int
+    size() const
+    {
+      return materials.size();
     }
 
     /// Whether some layer is assembled by the finite-strain kernel.

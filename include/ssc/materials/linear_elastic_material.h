@@ -2,6 +2,7 @@
 #define ssc_materials_linear_elastic_material_h
 
 #include <ssc/materials/material.h>
+#include <ssc/materials/material_registry.h>
 
 namespace ssc
 {
@@ -16,6 +17,15 @@ namespace ssc
   {
   public:
     using Material::Material;
+
+    /// The law of a layer with @p moduli and the @p parameters the law owns
+    /// (what the MaterialRegistry makes).
+    LinearElasticMaterial(const IsotropicModuli      &moduli,
+                          const NoMaterialParameters &parameters)
+      : Material(moduli)
+    {
+      (void)parameters;
+    }
 
     Kinematics
     kinematics() const override

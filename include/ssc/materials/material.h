@@ -37,8 +37,12 @@ namespace ssc
    * relies on the isochoric part depending on F only through J^{-1/3} F, as
    * the laws here do: then gamma W_iso(F_e) = gamma W_iso(F).
    *
-   * A new law is one class derived from this one, an entry in make_material()
-   * and its case in tests/material_tangent.cc.
+   * A new law is one class derived from this one, registered in its own
+   * source file (register_material(), materials/material_registry.h) with
+   * the parameters it owns; tests/material_tangent.cc checks every
+   * registered law. A law that keeps history per quadrature point (visco-
+   * elasticity, damage) says how many values (n_history_variables()); the
+   * mechanics keeps them in a QuadratureHistory.
    */
   class Material
   {
@@ -51,6 +55,15 @@ namespace ssc
 
     virtual Kinematics
     kinematics() const = 0;
+
+    /// Number of history variables per quadrature point (internal
+    /// variables of the law, committed at each accepted load or time step);
+    /// 0 for an elastic law.
+    virtual unsigned int
+    n_history_variables() const
+    {
+      return 0;
+    }
 
     /// Isochoric Kirchhoff stress @p tau and spatial tangent @p tangent per
     /// unit reference volume at @p F (det F > 0).

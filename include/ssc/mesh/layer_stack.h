@@ -12,27 +12,10 @@
 #include <vector>
 
 #include <ssc/base/enum_table.h>
-#include <ssc/materials/volumetric_energy.h>
 
 namespace ssc
 {
   using namespace dealii;
-
-  /// Constitutive law of a layer (materials/layer_materials.h makes it).
-  enum class MaterialModel
-  {
-    linear,
-    corotational,
-    neo_hookean
-  };
-
-  constexpr std::array<std::pair<MaterialModel, const char *>, 3>
-  enum_table(MaterialModel)
-  {
-    return {{{MaterialModel::linear, "linear"},
-             {MaterialModel::corotational, "corotational"},
-             {MaterialModel::neo_hookean, "neo-Hookean"}}};
-  }
 
   /// Anatomical role of a layer; decides which microstructure it may carry.
   enum class LayerKind
@@ -56,8 +39,10 @@ namespace ssc
 
   /**
    * One layer of the skin/subcutaneous complex: its thickness map
-   * t(x, y) in mm (a constant or a muParser expression), its isotropic
-   * material and how many background cells resolve it.
+   * t(x, y) in mm (a constant or a muParser expression), how many
+   * background cells resolve it, its small-strain moduli and the name of
+   * its constitutive law (materials/ makes the law, with the parameters the
+   * law owns).
    */
   struct Layer
   {
@@ -81,9 +66,9 @@ namespace ssc
     double lobule_diameter = 0;
     /// Height-to-width ratio of the lobules (> 1: palisade-like SAT).
     double lobule_stretch = 1;
-    /// Small-strain linear elasticity or compressible neo-Hookean.
-    MaterialModel        model             = MaterialModel::linear;
-    VolumetricEnergyForm volumetric_energy = VolumetricEnergyForm::logarithmic;
+    /// The name of the constitutive law (a law of the MaterialRegistry,
+    /// which checks it).
+    std::string material_model = "linear";
 
     /// Whether this layer can carry lobules (kind SAT or DAT).
     bool
@@ -191,16 +176,12 @@ namespace ssc
     unsigned int
     index_of(const std::string &name, const std::string &parameter) const;
 
-    /// Sets the material model of layer @p i (tests, benchmarks).
+    /// Sets the law of layer @p i by name (tests, benchmarks).
     void
-    set_model(const unsigned int i, const MaterialModel model)
+    set_model(const unsigned int i, const std::string &material_model)
     {
-      layers[i].model = model;
+      layers[i].material_model = material_model;
     }
-
-    /// Whether any layer has a nonlinear material model.
-    bool
-    nonlinear() const;
 
     /// Adds a layer programmatically (tests, benchmarks).
     void
