@@ -8,7 +8,8 @@
 #                                           debug deal.II (Asserts on), in
 #                                           build-debug/
 #   ./ssc.sh format-check                   every C++ file formatted with
-#                                           the deal.II .clang-format?
+#                                           the deal.II .clang-format, and
+#                                           the folder include rule kept?
 #   ./ssc.sh build                          install and build only
 # SSC_RANKS sets the MPI ranks of "run" (default: one per core, or one for
 # a scene with a direct factor, whose cell loops then take every core as
@@ -46,6 +47,10 @@ configure() {
   local dir="$1" type="$2"
   shift 2
   export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
+  # paths below the project relative and the build folder out of the hash,
+  # so that a fresh clone elsewhere (CI) reuses what an earlier build
+  # compiled (deal.II's flags carry -g, which hashes the folder otherwise)
+  export CCACHE_BASEDIR="$ROOT" CCACHE_NOHASHDIR=1
   mkdir -p "$dir"
   cmake -S "$ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" \
     -DSSC_ENABLE_TESTS=ON "$@" > "$dir/cmake.log" 2>&1 ||
@@ -135,6 +140,9 @@ case "${1:-run}" in
       exit 1
     fi
     echo "ssc.sh: every C++ file is formatted"
+    # the folder rule of docs/architecture.md: each folder includes only
+    # earlier ones
+    python3 "$ROOT/scripts/check_includes.py"
     ;;
   *)
     echo "usage: $0 run [FILE.prm] [-s ...] | test | test-debug | format-check | build" >&2

@@ -7,11 +7,11 @@
 #include <thread>
 
 #include <ssc/application.h>
-#include <ssc/parameters.h>
+#include <ssc/identification/identification_scene.h>
 #include <ssc/scenes/geometry_scene.h>
 #include <ssc/scenes/growth_scene.h>
-#include <ssc/scenes/identification_scene.h>
 #include <ssc/scenes/indentation_scene.h>
+#include <ssc/scenes/parameters.h>
 
 namespace ssc
 {

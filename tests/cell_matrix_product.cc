@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include <ssc/mechanics/cell_matrix_product.h>
+#include <ssc/linear_algebra/cell_matrix_product.h>
 
 #include "tests.h"
 

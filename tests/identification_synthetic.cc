@@ -17,7 +17,7 @@
 
 #include <ssc/identification/layer_moduli_fit.h>
 #include <ssc/identification/probe_forward_model.h>
-#include <ssc/parameters.h>
+#include <ssc/scenes/parameters.h>
 
 #include "tests.h"
 

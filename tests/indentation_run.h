@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include <ssc/parameters.h>
 #include <ssc/scenes/indentation_scene.h>
+#include <ssc/scenes/parameters.h>
 
 /// The indentation scene of tests/@p prm with the parameter overrides
 /// @p base and then @p extra ("Section/Name=value"), on MPI_COMM_WORLD,

@@ -17,8 +17,8 @@
 
 #include <cmath>
 
-#include <ssc/mechanics/cholesky_preconditioner.h>
-#include <ssc/mechanics/ldlt_preconditioner.h>
+#include <ssc/linear_algebra/cholesky_preconditioner.h>
+#include <ssc/linear_algebra/ldlt_preconditioner.h>
 
 #include "tests.h"
 

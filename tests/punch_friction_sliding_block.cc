@@ -24,8 +24,8 @@
 #include <cmath>
 #include <iomanip>
 
-#include <ssc/parameters.h>
 #include <ssc/scenes/mechanics_model.h>
+#include <ssc/scenes/parameters.h>
 #include <ssc/scenes/punch_loading.h>
 #include <ssc/scenes/quasi_static_driver.h>
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <ssc/parameters.h>
 #include <ssc/scenes/indentation_scene.h>
+#include <ssc/scenes/parameters.h>
 
 /// Force over depth of the punch of punch_small.prm with @p settings
 /// (run folder @p name), the solvers at tight tolerances.

@@ -13,8 +13,8 @@
 #include <iomanip>
 #include <sstream>
 
-#include <ssc/parameters.h>
 #include <ssc/scenes/indentation_scene.h>
+#include <ssc/scenes/parameters.h>
 
 #include "tests.h"
 

@@ -17,7 +17,7 @@
 
 #include <cmath>
 
-#include <ssc/mechanics/truncated_cg.h>
+#include <ssc/linear_algebra/truncated_cg.h>
 
 #include "tests.h"
 

@@ -10,7 +10,7 @@
 namespace ssc
 {
   /**
-   * The command line of ssc (DESIGN.md §3):
+   * The command line of ssc (docs/architecture.md §7):
    *   ssc FILE.prm [-s "Section/Name=value"]...   run the scene
    *   ssc --check FILE.prm [-s ...]               parse and validate only
    *   ssc --print-parameters                      all parameters, documented

@@ -81,35 +81,7 @@ namespace ssc
   BoundaryConstraints::setup(const std::vector<DirichletCondition> &conditions,
                              const std::vector<TiedCondition>      &ties)
   {
-    const MPI_Comm communicator =
-      field.dof_handler().get_triangulation().get_communicator();
-    // The master of each tie, made locally relevant everywhere so that
-    // every rank can resolve u_i = u_master.
-    tie_masters.clear();
-    relevant = field.mesh_relevant_dofs();
-    for (const TiedCondition &tie : ties)
-      {
-        tie_masters.push_back(find_master(tie));
-        relevant.add_index(tie_masters.back());
-      }
-    relevant.compress();
-    relevant_components.assign(relevant.n_elements(), 0);
-    {
-      const FiniteElement<3>              &fe = field.fe();
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-      for (const auto &cell : field.dof_handler().active_cell_iterators())
-        if (!cell->is_artificial())
-          {
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              relevant_components[relevant.index_within_set(dofs[i])] =
-                fe.system_to_component_index(i).first;
-          }
-      // a master may lie on cells this rank does not see
-      for (unsigned int t = 0; t < ties.size(); ++t)
-        relevant_components[relevant.index_within_set(tie_masters[t])] =
-          ties[t].component;
-    }
+    find_relevant_dofs(ties);
 
     hanging_node_constraints.clear();
     hanging_node_constraints.reinit(relevant);
@@ -127,6 +99,53 @@ namespace ssc
     const types::global_dof_index n_dofs = field.dof_handler().n_dofs();
     condition_dofs.assign(conditions.size() + ties.size(), IndexSet(n_dofs));
     dirichlet_values.clear();
+    add_dirichlet_conditions(conditions);
+    constrain_tie_masters(conditions);
+    add_ties(conditions, ties);
+    constraints.close();
+
+    make_homogeneous_constraints(conditions, ties);
+    dirichlet_scale = 1.;
+  }
+
+
+  void
+  BoundaryConstraints::find_relevant_dofs(
+    const std::vector<TiedCondition> &ties)
+  {
+    // The master of each tie, made locally relevant everywhere so that
+    // every rank can resolve u_i = u_master.
+    tie_masters.clear();
+    relevant = field.mesh_relevant_dofs();
+    for (const TiedCondition &tie : ties)
+      {
+        tie_masters.push_back(find_master(tie));
+        relevant.add_index(tie_masters.back());
+      }
+    relevant.compress();
+    relevant_components.assign(relevant.n_elements(), 0);
+    const FiniteElement<3>              &fe = field.fe();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : field.dof_handler().active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            relevant_components[relevant.index_within_set(dofs[i])] =
+              fe.system_to_component_index(i).first;
+        }
+    // a master may lie on cells this rank does not see
+    for (unsigned int t = 0; t < ties.size(); ++t)
+      relevant_components[relevant.index_within_set(tie_masters[t])] =
+        ties[t].component;
+  }
+
+
+  void
+  BoundaryConstraints::add_dirichlet_conditions(
+    const std::vector<DirichletCondition> &conditions)
+  {
+    AffineConstraints<double> &constraints = prescribed_constraints;
     for (unsigned int c = 0; c < conditions.size(); ++c)
       {
         const DirichletCondition &condition = conditions[c];
@@ -147,12 +166,22 @@ namespace ssc
                           });
         condition_dofs[c].compress();
       }
+  }
+
+
+  void
+  BoundaryConstraints::constrain_tie_masters(
+    const std::vector<DirichletCondition> &conditions)
+  {
+    const MPI_Comm communicator =
+      field.dof_handler().get_triangulation().get_communicator();
+    AffineConstraints<double> &constraints = prescribed_constraints;
     // A tie's master can be relevant on a rank that sees none of its faces
-    // (it was added above), so only the ranks that do see them know a
-    // Dirichlet condition on it (displacement control with the edge
-    // contact). Every rank must constrain it alike: otherwise the blocks
-    // the others add to its row (the contact's punch height) survive as a
-    // residual that Newton's method cannot remove.
+    // (find_relevant_dofs() added it), so only the ranks that do see them know
+    // a Dirichlet condition on it (displacement control with the edge contact).
+    // Every rank must constrain it alike: otherwise the blocks the others add
+    // to its row (the contact's punch height) survive as a residual that
+    // Newton's method cannot remove.
     for (const types::global_dof_index master : tie_masters)
       {
         unsigned int condition = numbers::invalid_unsigned_int;
@@ -173,6 +202,15 @@ namespace ssc
         dirichlet_values.emplace_back(master, value);
         condition_dofs[condition].add_index(master);
       }
+  }
+
+
+  void
+  BoundaryConstraints::add_ties(
+    const std::vector<DirichletCondition> &conditions,
+    const std::vector<TiedCondition>      &ties)
+  {
+    AffineConstraints<double> &constraints = prescribed_constraints;
     // Ties: u_i = u_master; the master counts among the tie's dofs.
     for (unsigned int t = 0; t < ties.size(); ++t)
       {
@@ -194,8 +232,14 @@ namespace ssc
                           });
         tied.compress();
       }
-    constraints.close();
+  }
 
+
+  void
+  BoundaryConstraints::make_homogeneous_constraints(
+    const std::vector<DirichletCondition> &conditions,
+    const std::vector<TiedCondition>      &ties)
+  {
     homogeneous_constraints.clear();
     homogeneous_constraints.reinit(relevant);
     homogeneous_constraints.merge(hanging_node_constraints);
@@ -209,7 +253,6 @@ namespace ssc
             homogeneous_constraints.add_entry(dof, tie_masters[t], 1.);
           }
     homogeneous_constraints.close();
-    dirichlet_scale = 1.;
   }
 
 
@@ -290,5 +333,12 @@ namespace ssc
         std::max(largest, std::abs(dirichlet_scale * value - solution[dof]));
     return Utilities::MPI::max(
       largest, field.dof_handler().get_triangulation().get_communicator());
+  }
+  void
+  BoundaryConstraints::apply(DisplacementField &target) const
+  {
+    TrilinosWrappers::MPI::Vector owned = target.owned_solution();
+    prescribed_constraints.distribute(owned);
+    target.set_solution(owned);
   }
 } // namespace ssc

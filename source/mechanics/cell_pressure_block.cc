@@ -1,6 +1,6 @@
 #include <algorithm>
 
-#include <ssc/mechanics/cell_matrix_product.h>
+#include <ssc/linear_algebra/cell_matrix_product.h>
 #include <ssc/mechanics/cell_pressure_block.h>
 
 namespace ssc

@@ -14,13 +14,13 @@
 namespace ssc
 {
   ElasticSystem::ElasticSystem(const BackgroundMesh       &mesh,
-                               const LayerStack           &layers,
+                               LayerMaterials              materials,
                                const ElasticityParameters &parameters,
                                TimerOutput                &timer,
                                ConditionalOStream         *progress)
     : parameters(parameters)
     , timer(timer)
-    , layer_materials(layers)
+    , layer_materials(std::move(materials))
     , displacement(mesh.triangulation(),
                    parameters.degree,
                    mesh.mapping_degree(parameters.degree))
@@ -56,6 +56,8 @@ namespace ssc
     bool accepted = true;
     for (DofContribution *contribution : dof_contributions)
       accepted = contribution->accept(displacement.solution()) && accepted;
+    if (accepted)
+      history.accept();
     return accepted;
   }
 
@@ -65,6 +67,7 @@ namespace ssc
   {
     for (DofContribution *contribution : dof_contributions)
       contribution->reject();
+    history.reject();
   }
 
 
@@ -90,6 +93,12 @@ namespace ssc
                        const std::vector<TiedCondition>      &ties)
   {
     boundary_constraints.setup(conditions, ties);
+    std::vector<unsigned int> n_history_variables;
+    for (unsigned int m = 0; m < layer_materials.size(); ++m)
+      n_history_variables.push_back(layer_materials[m].n_history_variables());
+    history.initialize(displacement.dof_handler().get_triangulation(),
+                       n_history_variables,
+                       Utilities::pow(parameters.degree + 1, 3));
     displacement.set_relevant_dofs(boundary_constraints.relevant_dofs());
     const IndexSet &owned = displacement.locally_owned_dofs();
     const MPI_Comm  communicator =
@@ -106,7 +115,7 @@ namespace ssc
                                       communicator));
     assembler.add_couplings(boundary_constraints.prescribed(), sparsity);
     sparsity.compress();
-    matrix.reinit(sparsity);
+    linearisation.tangent.reinit(sparsity);
     if (parameters.linear_solver.method == LinearSolverMethod::block)
       {
         pressure_system =
@@ -114,17 +123,8 @@ namespace ssc
                                            parameters.n_pressure_modes());
         pressure_system->setup(sparsity, boundary_constraints.prescribed());
       }
-    system_rhs.reinit(owned, communicator);
-    last_update.reinit(owned, communicator);
-  }
-
-
-  void
-  ElasticSystem::apply_constraints()
-  {
-    TrilinosWrappers::MPI::Vector owned = displacement.owned_solution();
-    boundary_constraints.prescribed().distribute(owned);
-    displacement.set_solution(owned);
+    linearisation.rhs.reinit(owned, communicator);
+    linearisation.update.reinit(owned, communicator);
   }
 
 
@@ -139,16 +139,16 @@ namespace ssc
       assembler.assemble(displacement.solution(),
                          constraints,
                          external_loads.body_force,
-                         with_tangent ? &matrix : nullptr,
-                         system_rhs,
+                         with_tangent ? &linearisation.tangent : nullptr,
+                         linearisation.rhs,
                          pressure_system.get());
     for (const auto &[dof, force] : external_loads.nodal_forces)
       if (displacement.locally_owned_dofs().is_element(dof))
-        system_rhs[dof] += force;
-    system_rhs.compress(VectorOperation::add);
+        linearisation.rhs[dof] += force;
+    linearisation.rhs.compress(VectorOperation::add);
     if (inverted > 0)
       return std::numeric_limits<double>::infinity();
-    return system_rhs.l2_norm();
+    return linearisation.rhs.l2_norm();
   }
 
 
@@ -156,17 +156,17 @@ namespace ssc
   ElasticSystem::solve_update(const SolveTarget &target)
   {
     TimerOutput::Scope t(timer, "solve");
-    last_update = 0;
+    linearisation.update = 0;
     if (pressure_system)
-      return linear_solver.solve_saddle_point(matrix,
+      return linear_solver.solve_saddle_point(linearisation.tangent,
                                               *pressure_system,
-                                              last_update,
-                                              system_rhs,
+                                              linearisation.update,
+                                              linearisation.rhs,
                                               boundary_constraints.increment(),
                                               target);
-    return linear_solver.solve(matrix,
-                               last_update,
-                               system_rhs,
+    return linear_solver.solve(linearisation.tangent,
+                               linearisation.update,
+                               linearisation.rhs,
                                boundary_constraints.increment(),
                                target);
   }
@@ -178,9 +178,9 @@ namespace ssc
                                      const bool         new_preconditioner)
   {
     TimerOutput::Scope t(timer, "solve");
-    return linear_solver.solve_within(matrix,
-                                      last_update,
-                                      system_rhs,
+    return linear_solver.solve_within(linearisation.tangent,
+                                      linearisation.update,
+                                      linearisation.rhs,
                                       boundary_constraints.increment(),
                                       radius,
                                       target,
@@ -194,9 +194,26 @@ namespace ssc
     assemble(true);
     const LinearSolveReport       report = solve_update(SolveTarget());
     TrilinosWrappers::MPI::Vector u      = displacement.owned_solution();
-    u += last_update;
+    u += linearisation.update;
     displacement.set_solution(u);
     return report;
+  }
+
+
+  void
+  ElasticSystem::shift_tangent(const double shift)
+  {
+    // read the diagonal before the first add leaves the matrix uncompressed
+    TrilinosWrappers::SparseMatrix  &K = linearisation.tangent;
+    const AffineConstraints<double> &constraints =
+      boundary_constraints.increment();
+    std::vector<std::pair<types::global_dof_index, double>> additions;
+    for (const types::global_dof_index row : displacement.locally_owned_dofs())
+      if (!constraints.is_constrained(row))
+        additions.emplace_back(row, shift * K.diag_element(row));
+    for (const auto &[row, value] : additions)
+      K.add(row, row, value);
+    K.compress(VectorOperation::add);
   }
 
 
@@ -227,36 +244,5 @@ namespace ssc
       [this](const types::global_dof_index dof) {
         return boundary_constraints.component(dof);
       });
-  }
-
-
-  double
-  ElasticSystem::volume_change() const
-  {
-    FEValues<3>                      fe_values(displacement.mapping(),
-                          displacement.fe(),
-                          kernel.quadrature(),
-                          update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector u(0);
-    std::vector<Tensor<2, 3>>        gradients(kernel.quadrature().size());
-    double                           change = 0;
-    for (const auto &cell : displacement.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[u].get_function_gradients(displacement.solution(),
-                                              gradients);
-          const bool small_strain =
-            kernel.material(cell).kinematics() == Kinematics::small_strain;
-          for (unsigned int q = 0; q < gradients.size(); ++q)
-            change +=
-              (small_strain ?
-                 trace(gradients[q]) :
-                 determinant(unit_symmetric_tensor<3>() + gradients[q]) - 1.) *
-              fe_values.JxW(q);
-        }
-    return Utilities::MPI::sum(
-      change,
-      displacement.dof_handler().get_triangulation().get_communicator());
   }
 } // namespace ssc

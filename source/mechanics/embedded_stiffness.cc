@@ -117,19 +117,20 @@ namespace ssc
   void
   EmbeddedStiffness::add_to_cell(
     const DoFHandler<3>::active_cell_iterator &cell,
-    const Vector<double>                      &u,
-    const Kinematics                           kinematics,
-    const bool                                 with_matrix,
-    FullMatrix<double>                        &cell_matrix,
-    Vector<double>                            &cell_residual) const
+    const CellScratch                         &scratch,
+    CellCopy                                  &copy) const
   {
-    const unsigned int index = cell->active_cell_index();
+    const Vector<double> &u             = scratch.u;
+    const bool            with_matrix   = scratch.with_matrix;
+    FullMatrix<double>   &cell_matrix   = copy.matrix;
+    Vector<double>       &cell_residual = copy.residual;
+    const unsigned int    index         = cell->active_cell_index();
     if (index >= points_per_cell.size() || points_per_cell[index].empty())
       return;
     const std::vector<LocalPoint> &local     = points_per_cell[index];
     const auto                     fe_values = reinit_points(cell, local);
     AssertDimension(u.size(), fe.n_dofs_per_cell());
-    if (kinematics == Kinematics::small_strain)
+    if (scratch.kinematics == Kinematics::small_strain)
       add_linear(local, *fe_values, u, cell_matrix, cell_residual);
     else if (cable)
       add_cable(local, *fe_values, u, with_matrix, cell_matrix, cell_residual);

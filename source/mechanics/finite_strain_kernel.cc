@@ -2,59 +2,50 @@
 
 #include <array>
 
-#include <ssc/mechanics/cell_matrix_product.h>
+#include <ssc/linear_algebra/cell_matrix_product.h>
 #include <ssc/mechanics/finite_strain_kernel.h>
 #include <ssc/mechanics/pressure_basis.h>
 
 namespace ssc
 {
-  namespace
+  /// The projected dilatation of the mixed formulations on one cell: the
+  /// pressure space's Gram matrix M (weighted by gamma) and its inverse,
+  /// the coefficients of theta and of the pressure, and the tangent
+  /// factor M^{-1} H M^{-1}.
+  struct FiniteStrainKernel::ProjectedDilatation
   {
-    /// The projected dilatation of the mixed formulations on one cell: the
-    /// pressure space's Gram matrix M (weighted by gamma) and its inverse,
-    /// the coefficients of theta and of the pressure, and the tangent
-    /// factor M^{-1} H M^{-1}.
-    struct ProjectedDilatation
-    {
-      FullMatrix<double>               mass, volumetric; // M, H
-      FullMatrix<double>               mass_inverse;
-      Vector<double>                   theta, pressure;
-      FullMatrix<double>               stiffness;
-      std::vector<std::vector<double>> basis; // [q][a]
-    };
-  } // namespace
+    FullMatrix<double>               mass, volumetric; // M, H
+    FullMatrix<double>               mass_inverse;
+    Vector<double>                   theta, pressure;
+    FullMatrix<double>               stiffness;
+    std::vector<std::vector<double>> basis; // [q][a]
+  };
 
 
-  FiniteStrainKernel::FiniteStrainKernel(const ElasticityParameters &parameters)
+  FiniteStrainKernel::FiniteStrainKernel(const ElasticityParameters &parameters,
+                                         const LayerMaterials       &materials,
+                                         const GrowthField          &growth)
     : parameters(parameters)
+    , materials(materials)
+    , growth(growth)
   {}
 
 
   bool
-  FiniteStrainKernel::assemble(const DoFHandler<3>::active_cell_iterator &cell,
-                               const FEValues<3>    &fe_values,
-                               const Material       &material,
-                               const GrowthField    &growth,
-                               const Function<3>    *body_force,
-                               const Vector<double> &u,
-                               const bool            with_matrix,
-                               FullMatrix<double>   &cell_matrix,
-                               Vector<double>       &cell_residual,
-                               CellPressureBlock    *block) const
+  FiniteStrainKernel::deformation_gradients(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const CellScratch                         &scratch,
+    std::vector<Tensor<2, 3>>                 &F,
+    std::vector<double>                       &gamma) const
   {
-    const FiniteElement<3> &fe         = fe_values.get_fe();
-    const VolumetricEnergy &volumetric = material.volumetric();
-    const unsigned int      n          = fe.n_dofs_per_cell();
-    const unsigned int      n_q        = fe_values.n_quadrature_points;
-    const unsigned int      n_p        = parameters.n_pressure_modes();
-    const bool              projected  = n_p > 0;
-    // share of U(J) at the quadrature points (stabilises the projection)
-    const double beta = projected ? parameters.volumetric_stabilisation : 1.;
+    const FEValues<3>      &fe_values = scratch.fe_values;
+    const FiniteElement<3> &fe        = fe_values.get_fe();
+    const unsigned int      n         = fe.n_dofs_per_cell();
+    const unsigned int      n_q       = fe_values.n_quadrature_points;
+    const Vector<double>   &u         = scratch.u;
     AssertDimension(u.size(), n);
-
-    // deformation gradients and growth ratios
-    std::vector<Tensor<2, 3>> F(n_q, unit_symmetric_tensor<3>());
-    std::vector<double>       gamma(n_q);
+    F.assign(n_q, unit_symmetric_tensor<3>());
+    gamma.resize(n_q);
     for (unsigned int q = 0; q < n_q; ++q)
       {
         for (unsigned int i = 0; i < n; ++i)
@@ -66,60 +57,99 @@ namespace ssc
           return false;
         gamma[q] = 1. + growth.at(cell, q);
       }
+    return true;
+  }
 
-    ProjectedDilatation projection;
-    if (projected)
+
+  bool
+  FiniteStrainKernel::project_dilatation(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const CellScratch                         &scratch,
+    const std::vector<Tensor<2, 3>>           &F,
+    const std::vector<double>                 &gamma,
+    ProjectedDilatation                       &projection) const
+  {
+    const FEValues<3>      &fe_values = scratch.fe_values;
+    const VolumetricEnergy &volumetric =
+      materials[cell->material_id()].volumetric();
+    const unsigned int  n_q = fe_values.n_quadrature_points;
+    const unsigned int  n_p = parameters.n_pressure_modes();
+    const PressureBasis basis(n_p, cell);
+    projection.basis.resize(n_q);
+    FullMatrix<double> mass(n_p, n_p);
+    Vector<double>     moments(n_p); // int q_a J
+    for (unsigned int q = 0; q < n_q; ++q)
       {
-        const PressureBasis basis(n_p, cell);
-        projection.basis.resize(n_q);
-        FullMatrix<double> mass(n_p, n_p);
-        Vector<double>     moments(n_p); // int q_a J
-        for (unsigned int q = 0; q < n_q; ++q)
+        basis.evaluate(fe_values.quadrature_point(q), projection.basis[q]);
+        const auto  &b   = projection.basis[q];
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int a = 0; a < n_p; ++a)
           {
-            basis.evaluate(fe_values.quadrature_point(q), projection.basis[q]);
-            const auto  &b   = projection.basis[q];
-            const double JxW = fe_values.JxW(q);
-            for (unsigned int a = 0; a < n_p; ++a)
-              {
-                for (unsigned int c = 0; c < n_p; ++c)
-                  mass(a, c) += gamma[q] * b[a] * b[c] * JxW;
-                moments(a) += b[a] * determinant(F[q]) * JxW;
-              }
+            for (unsigned int c = 0; c < n_p; ++c)
+              mass(a, c) += gamma[q] * b[a] * b[c] * JxW;
+            moments(a) += b[a] * determinant(F[q]) * JxW;
           }
-        projection.mass = mass;
-        projection.mass_inverse.reinit(n_p, n_p);
-        projection.mass_inverse.invert(mass);
-        projection.theta.reinit(n_p);
-        projection.mass_inverse.vmult(projection.theta, moments);
-        Vector<double>     pressure_moments(n_p);
-        FullMatrix<double> H(n_p, n_p);
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const auto &b     = projection.basis[q];
-            double      theta = 0;
-            for (unsigned int a = 0; a < n_p; ++a)
-              theta += projection.theta(a) * b[a];
-            if (!(theta > 0))
-              return false;
-            const double JxW = fe_values.JxW(q);
-            for (unsigned int a = 0; a < n_p; ++a)
-              {
-                pressure_moments(a) +=
-                  gamma[q] * volumetric.pressure(theta) * b[a] * JxW;
-                for (unsigned int c = 0; c < n_p; ++c)
-                  H(a, c) += gamma[q] * volumetric.pressure_derivative(theta) *
-                             b[a] * b[c] * JxW;
-              }
-          }
-        projection.volumetric = H;
-        projection.pressure.reinit(n_p);
-        projection.mass_inverse.vmult(projection.pressure, pressure_moments);
-        // M^{-1} H M^{-1}
-        FullMatrix<double> H_M_inverse(n_p, n_p);
-        multiply(H_M_inverse, H, projection.mass_inverse);
-        projection.stiffness.reinit(n_p, n_p);
-        multiply(projection.stiffness, projection.mass_inverse, H_M_inverse);
       }
+    projection.mass = mass;
+    projection.mass_inverse.reinit(n_p, n_p);
+    projection.mass_inverse.invert(mass);
+    projection.theta.reinit(n_p);
+    projection.mass_inverse.vmult(projection.theta, moments);
+    Vector<double>     pressure_moments(n_p);
+    FullMatrix<double> H(n_p, n_p);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const auto &b     = projection.basis[q];
+        double      theta = 0;
+        for (unsigned int a = 0; a < n_p; ++a)
+          theta += projection.theta(a) * b[a];
+        if (!(theta > 0))
+          return false;
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int a = 0; a < n_p; ++a)
+          {
+            pressure_moments(a) +=
+              gamma[q] * volumetric.pressure(theta) * b[a] * JxW;
+            for (unsigned int c = 0; c < n_p; ++c)
+              H(a, c) += gamma[q] * volumetric.pressure_derivative(theta) *
+                         b[a] * b[c] * JxW;
+          }
+      }
+    projection.volumetric = H;
+    projection.pressure.reinit(n_p);
+    projection.mass_inverse.vmult(projection.pressure, pressure_moments);
+    // M^{-1} H M^{-1}
+    FullMatrix<double> H_M_inverse(n_p, n_p);
+    multiply(H_M_inverse, H, projection.mass_inverse);
+    projection.stiffness.reinit(n_p, n_p);
+    multiply(projection.stiffness, projection.mass_inverse, H_M_inverse);
+    return true;
+  }
+
+
+  void
+  FiniteStrainKernel::integrate(const DoFHandler<3>::active_cell_iterator &cell,
+                                const CellScratch               &scratch,
+                                const std::vector<Tensor<2, 3>> &F,
+                                const std::vector<double>       &gamma,
+                                const ProjectedDilatation       &projection,
+                                FullMatrix<double>              &B,
+                                CellCopy                        &copy) const
+  {
+    const FEValues<3>      &fe_values     = scratch.fe_values;
+    const FiniteElement<3> &fe            = fe_values.get_fe();
+    const Material         &material      = materials[cell->material_id()];
+    const VolumetricEnergy &volumetric    = material.volumetric();
+    const Function<3>      *body_force    = scratch.body_force;
+    const bool              with_matrix   = scratch.with_matrix;
+    FullMatrix<double>     &cell_matrix   = copy.matrix;
+    Vector<double>         &cell_residual = copy.residual;
+    const unsigned int      n             = fe.n_dofs_per_cell();
+    const unsigned int      n_q           = fe_values.n_quadrature_points;
+    const unsigned int      n_p           = parameters.n_pressure_modes();
+    const bool              projected     = n_p > 0;
+    // share of U(J) at the quadrature points (stabilises the projection)
+    const double beta = projected ? parameters.volumetric_stabilisation : 1.;
 
     cell_matrix   = 0;
     cell_residual = 0;
@@ -141,7 +171,6 @@ namespace ssc
       }
     std::vector<Tensor<1, 3>> g(n_base); // spatial shape gradients
     std::vector<Tensor<3, 3>> W(n_base);
-    FullMatrix<double>        B(n_p, n); // int q_a J div(phi_i)
     SymmetricTensor<2, 3>     tau;
     Tensor<4, 3>              T;
     Vector<double>            force(3);
@@ -203,6 +232,24 @@ namespace ssc
                 cell_matrix(dof_of[row][c], dof_of[column][d]) +=
                   W[row][c][d] * g[column];
       }
+  }
+
+
+  void
+  FiniteStrainKernel::add_projected_volumetric(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const CellScratch                         &scratch,
+    const ProjectedDilatation                 &projection,
+    const FullMatrix<double>                  &B,
+    CellCopy                                  &copy) const
+  {
+    const unsigned int n           = copy.matrix.m();
+    const unsigned int n_p         = parameters.n_pressure_modes();
+    const bool         projected   = n_p > 0;
+    const bool         with_matrix = scratch.with_matrix;
+    const double beta = projected ? parameters.volumetric_stabilisation : 1.;
+    FullMatrix<double> &cell_matrix = copy.matrix;
+    CellPressureBlock *block = scratch.with_pressure ? &copy.pressure : nullptr;
     Assert(block == nullptr || (projected && with_matrix && beta < 1.),
            ExcMessage("A pressure block needs the projected dilatation."));
     if (block != nullptr)
@@ -217,8 +264,9 @@ namespace ssc
         block->pressure.reinit(n_p, n_p);
         multiply(block->pressure, projection.mass, H_inverse_M);
         block->pressure *= 1. / (1. - beta);
-        block->mass          = projection.mass;
-        block->shear_modulus = material.moduli().shear_modulus;
+        block->mass = projection.mass;
+        block->shear_modulus =
+          materials[cell->material_id()].moduli().shear_modulus;
       }
     if (projected && with_matrix && beta < 1.)
       {
@@ -234,6 +282,26 @@ namespace ssc
               cell_matrix(i, j) += (1. - beta) * value;
             }
       }
+  }
+
+
+  bool
+  FiniteStrainKernel::assemble(const DoFHandler<3>::active_cell_iterator &cell,
+                               const CellScratch &scratch,
+                               CellCopy          &copy) const
+  {
+    std::vector<Tensor<2, 3>> F;
+    std::vector<double>       gamma;
+    if (!deformation_gradients(cell, scratch, F, gamma))
+      return false;
+    ProjectedDilatation projection;
+    const unsigned int  n_p = parameters.n_pressure_modes();
+    if (n_p > 0 && !project_dilatation(cell, scratch, F, gamma, projection))
+      return false;
+    // int q_a J div(phi_i)
+    FullMatrix<double> B(n_p, scratch.fe_values.get_fe().n_dofs_per_cell());
+    integrate(cell, scratch, F, gamma, projection, B, copy);
+    add_projected_volumetric(cell, scratch, projection, B, copy);
     return true;
   }
 } // namespace ssc

@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include <ssc/mechanics/cell_matrix_product.h>
+#include <ssc/linear_algebra/cell_matrix_product.h>
 #include <ssc/mechanics/pressure_basis.h>
 #include <ssc/mechanics/small_strain_kernel.h>
 
@@ -159,55 +159,67 @@ namespace ssc
   } // namespace
 
 
+  /// The integrals over the strain modes (shape functions, then the
+  /// incompatible modes) that the cell matrix and load are made of.
+  struct SmallStrainKernel::ModeIntegrals
+  {
+    ModeIntegrals(const unsigned int n_modes, const unsigned int n_p)
+      : matrix(n_modes, n_modes)
+      , mass(n_p, n_p)
+      , coupling(n_p, n_modes)
+      , growth_rhs(n_modes)
+      , growth_moments(n_p, 0.)
+    {}
+
+    /// eps:C:eps + kappa div div (lower triangle; without the volumetric
+    /// part where it is projected)
+    FullMatrix<double> matrix;
+    /// int q_a q_b and int q_a div(phi_i) of the pressure modes q
+    FullMatrix<double> mass, coupling;
+    /// the growth eigenstrain's load kappa g div(phi_i) (displacement
+    /// formulation) and its moments int q_a g (projected)
+    Vector<double>      growth_rhs;
+    std::vector<double> growth_moments;
+    bool                grows = false;
+  };
+
+
   SmallStrainKernel::SmallStrainKernel(const ElasticityParameters &parameters,
-                                       const Quadrature<3>        &quadrature)
+                                       const Quadrature<3>        &quadrature,
+                                       const LayerMaterials       &materials,
+                                       const GrowthField          &growth)
     : parameters(parameters)
     , quadrature(quadrature)
+    , materials(materials)
+    , growth(growth)
   {}
 
 
   void
-  SmallStrainKernel::assemble(const DoFHandler<3>::active_cell_iterator &cell,
-                              const FEValues<3>  &fe_values,
-                              const Material     &material,
-                              const GrowthField  &growth,
-                              const Function<3>  *body_force,
-                              FullMatrix<double> &cell_matrix,
-                              Vector<double>     &cell_rhs,
-                              CellPressureBlock  *block) const
+  SmallStrainKernel::integrate_modes(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const CellScratch                         &scratch,
+    ModeIntegrals                             &integrals,
+    Vector<double>                            &cell_rhs) const
   {
-    const FiniteElement<3>          &fe     = fe_values.get_fe();
-    const unsigned int               n_dofs = fe.n_dofs_per_cell();
-    const unsigned int               n_q    = fe_values.n_quadrature_points;
+    const FEValues<3>               &fe_values = scratch.fe_values;
+    const FiniteElement<3>          &fe        = fe_values.get_fe();
+    const Material                  &material  = materials[cell->material_id()];
+    const unsigned int               n_dofs    = fe.n_dofs_per_cell();
+    const unsigned int               n_q       = fe_values.n_quadrature_points;
+    const unsigned int               n_modes   = integrals.matrix.m();
+    const unsigned int               n_p       = parameters.n_pressure_modes();
+    const bool                       mixed     = n_p > 0;
+    const bool                       enhanced  = n_modes > n_dofs;
     const FEValuesExtractors::Vector displacement(0);
-    const bool enhanced = parameters.formulation == Formulation::enhanced;
-    // the volumetric strain is projected unless n_p == 0
-    const unsigned int n_p   = parameters.n_pressure_modes();
-    const bool         mixed = n_p > 0;
-    // the strain modes: the shape functions, then (enhanced) the nine
-    // incompatible modes e_c P_d, condensed out at the end
-    const unsigned int n_modes = n_dofs + (enhanced ? 9 : 0);
-    Assert(cell_matrix.m() == n_dofs && cell_rhs.size() == n_dofs,
-           ExcDimensionMismatch(cell_matrix.m(), n_dofs));
-
-    cell_rhs = 0;
-    FullMatrix<double> matrix(n_modes, n_modes);
-
-    const SymmetricTensor<4, 3> C     = material.small_strain_tangent();
-    const double                kappa = material.moduli().bulk_modulus;
-    const PressureBasis         basis(mixed ? n_p : 1, cell);
-    FullMatrix<double>          mass(n_p, n_p), coupling(n_p, n_modes);
-    std::vector<double>         q_basis(n_p);
-
+    const SymmetricTensor<4, 3>      C     = material.small_strain_tangent();
+    const double                     kappa = material.moduli().bulk_modulus;
+    const PressureBasis              basis(mixed ? n_p : 1, cell);
+    std::vector<double>              q_basis(n_p);
     std::vector<SymmetricTensor<2, 3>> eps(n_modes), C_eps(n_modes);
     std::vector<double>                div(n_modes);
     Vector<double>                     force(3);
-    // the eigenstrain (g/3) I of growth loads the (projected) volumetric
-    // strain: kappa g div_bar(phi_i) over the strain modes
-    Vector<double>      growth_rhs(n_modes);
-    std::vector<double> growth_moments(n_p, 0.); // int q_a g
-    bool                grows = false;
-    const Tensor<2, 3>  J0 = enhanced ? centre_jacobian(cell) : Tensor<2, 3>();
+    const Tensor<2, 3> J0 = enhanced ? centre_jacobian(cell) : Tensor<2, 3>();
 
     for (unsigned int q = 0; q < n_q; ++q)
       {
@@ -236,21 +248,22 @@ namespace ssc
         // divergence instead: B-bar)
         const double kappa_q = mixed ? 0. : kappa;
         const double g       = growth.at(cell, q);
-        grows                = grows || g != 0.;
+        integrals.grows      = integrals.grows || g != 0.;
         for (unsigned int i = 0; i < n_modes; ++i)
           {
             C_eps[i] = C * eps[i];
             if (!mixed)
-              growth_rhs(i) += kappa * g * div[i] * JxW;
+              integrals.growth_rhs(i) += kappa * g * div[i] * JxW;
           }
         for (unsigned int i = 0; i < n_modes; ++i)
           for (unsigned int j = 0; j <= i; ++j)
-            matrix(i, j) +=
+            integrals.matrix(i, j) +=
               (C_eps[i] * eps[j] + kappa_q * div[i] * div[j]) * JxW;
 
-        if (body_force != nullptr)
+        if (scratch.body_force != nullptr)
           {
-            body_force->vector_value(fe_values.quadrature_point(q), force);
+            scratch.body_force->vector_value(fe_values.quadrature_point(q),
+                                             force);
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
                 const unsigned int c = fe.system_to_component_index(i).first;
@@ -264,52 +277,80 @@ namespace ssc
             for (unsigned int a = 0; a < n_p; ++a)
               {
                 for (unsigned int b = 0; b < n_p; ++b)
-                  mass(a, b) += q_basis[a] * q_basis[b] * JxW;
+                  integrals.mass(a, b) += q_basis[a] * q_basis[b] * JxW;
                 for (unsigned int i = 0; i < n_modes; ++i)
-                  coupling(a, i) += q_basis[a] * div[i] * JxW;
-                growth_moments[a] += q_basis[a] * g * JxW;
+                  integrals.coupling(a, i) += q_basis[a] * div[i] * JxW;
+                integrals.growth_moments[a] += q_basis[a] * g * JxW;
               }
           }
       }
     for (unsigned int i = 0; i < n_modes; ++i)
       for (unsigned int j = i + 1; j < n_modes; ++j)
-        matrix(i, j) = matrix(j, i);
+        integrals.matrix(i, j) = integrals.matrix(j, i);
+  }
 
-    Assert(block == nullptr || mixed,
+
+  void
+  SmallStrainKernel::assemble(const DoFHandler<3>::active_cell_iterator &cell,
+                              const CellScratch &scratch,
+                              CellCopy          &copy) const
+  {
+    FullMatrix<double> &cell_matrix = copy.matrix;
+    Vector<double>     &cell_rhs    = copy.residual;
+    const Material     &material    = materials[cell->material_id()];
+    const unsigned int  n_dofs = scratch.fe_values.get_fe().n_dofs_per_cell();
+    const bool enhanced = parameters.formulation == Formulation::enhanced;
+    // the volumetric strain is projected unless n_p == 0
+    const unsigned int n_p   = parameters.n_pressure_modes();
+    const bool         mixed = n_p > 0;
+    // the strain modes: the shape functions, then (enhanced) the nine
+    // incompatible modes e_c P_d, condensed out at the end
+    const unsigned int n_modes = n_dofs + (enhanced ? 9 : 0);
+    Assert(cell_matrix.m() == n_dofs && cell_rhs.size() == n_dofs,
+           ExcDimensionMismatch(cell_matrix.m(), n_dofs));
+    const double kappa = material.moduli().bulk_modulus;
+
+    cell_rhs = 0;
+    ModeIntegrals integrals(n_modes, n_p);
+    integrate_modes(cell, scratch, integrals, cell_rhs);
+    FullMatrix<double> &matrix = integrals.matrix;
+
+    Assert(!scratch.with_pressure || mixed,
            ExcMessage("A pressure block needs a pressure space."));
-    if (block != nullptr)
+    if (scratch.with_pressure)
       pressure_block(matrix,
-                     coupling,
-                     mass,
+                     integrals.coupling,
+                     integrals.mass,
                      kappa,
                      material.moduli().shear_modulus,
                      n_dofs,
-                     *block);
+                     copy.pressure);
 
     if (mixed)
       {
         // kappa B^T M^{-1} B: the bulk modulus on the projected divergence
-        mass.gauss_jordan();
+        integrals.mass.gauss_jordan();
         FullMatrix<double> m_inv_b(n_p, n_modes);
-        multiply(m_inv_b, mass, coupling);
+        multiply(m_inv_b, integrals.mass, integrals.coupling);
         FullMatrix<double> volumetric(n_modes, n_modes);
-        multiply(volumetric, coupling, m_inv_b, Transposed::left);
+        multiply(volumetric, integrals.coupling, m_inv_b, Transposed::left);
         matrix.add(kappa, volumetric);
         for (unsigned int i = 0; i < n_modes; ++i)
           for (unsigned int a = 0; a < n_p; ++a)
-            growth_rhs(i) += kappa * m_inv_b(a, i) * growth_moments[a];
+            integrals.growth_rhs(i) +=
+              kappa * m_inv_b(a, i) * integrals.growth_moments[a];
       }
-    if (!grows)
-      growth_rhs = 0;
+    if (!integrals.grows)
+      integrals.growth_rhs = 0;
 
     if (enhanced)
-      condense(matrix, growth_rhs, n_dofs, cell_matrix, cell_rhs);
+      condense(matrix, integrals.growth_rhs, n_dofs, cell_matrix, cell_rhs);
     else
       for (unsigned int i = 0; i < n_dofs; ++i)
         {
           for (unsigned int j = 0; j < n_dofs; ++j)
             cell_matrix(i, j) = matrix(i, j);
-          cell_rhs(i) += growth_rhs(i);
+          cell_rhs(i) += integrals.growth_rhs(i);
         }
   }
 } // namespace ssc

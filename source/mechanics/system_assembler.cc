@@ -10,36 +10,6 @@
 
 namespace ssc
 {
-  namespace
-  {
-    /// Per-thread scratch of the assembly loop: FEValues and the cell's
-    /// displacement and weight values.
-    struct AssemblyScratch
-    {
-      AssemblyScratch(const Mapping<3>       &mapping,
-                      const FiniteElement<3> &fe,
-                      const Quadrature<3>    &quadrature,
-                      const UpdateFlags       flags)
-        : fe_values(mapping, fe, quadrature, flags)
-        , u(fe.n_dofs_per_cell())
-        , w(fe.n_dofs_per_cell())
-      {}
-
-      AssemblyScratch(const AssemblyScratch &other)
-        : fe_values(other.fe_values.get_mapping(),
-                    other.fe_values.get_fe(),
-                    other.fe_values.get_quadrature(),
-                    other.fe_values.get_update_flags())
-        , u(other.u.size())
-        , w(other.w.size())
-      {}
-
-      FEValues<3>    fe_values;
-      Vector<double> u, w;
-    };
-  } // namespace
-
-
   SystemAssembler::SystemAssembler(const DisplacementField &field,
                                    const VolumeKernel      &kernel)
     : field(field)
@@ -72,24 +42,15 @@ namespace ssc
   }
 
 
-  template <typename ScratchData>
   void
   SystemAssembler::cell_work(const DoFHandler<3>::active_cell_iterator &cell,
-                             ScratchData                               &scratch,
-                             CellData                                  &data,
+                             CellScratch                               &scratch,
+                             CellCopy                                  &data,
                              const TrilinosWrappers::MPI::Vector       &u,
-                             const TrilinosWrappers::MPI::Vector       *w,
-                             const Function<3> *body_force,
-                             const bool         with_matrix,
-                             const bool         with_pressure) const
+                             const TrilinosWrappers::MPI::Vector       *w) const
   {
     const unsigned int n = field.fe().n_dofs_per_cell();
-    data.matrix.reinit(n, n);
-    data.residual.reinit(n);
-    data.dofs.resize(n);
-    data.inverted = false;
-    data.skipped  = false;
-    data.cell     = cell;
+    data.reinit(cell, n);
     if (w != nullptr)
       {
         cell->get_dof_values(*w, scratch.w);
@@ -101,15 +62,9 @@ namespace ssc
       }
     cell->get_dof_indices(data.dofs);
     cell->get_dof_values(u, scratch.u);
-    CellPressureBlock *const block = with_pressure ? &data.pressure : nullptr;
-    if (!kernel.residual_and_tangent(cell,
-                                     scratch.fe_values,
-                                     scratch.u,
-                                     body_force,
-                                     with_matrix,
-                                     data.matrix,
-                                     data.residual,
-                                     block))
+    CellPressureBlock *const block =
+      scratch.with_pressure ? &data.pressure : nullptr;
+    if (!kernel.assemble(cell, scratch, data))
       {
         data.inverted = true;
         return;
@@ -121,10 +76,8 @@ namespace ssc
     FullMatrix<double> volume_matrix;
     if (contributions_to_reduced)
       volume_matrix = data.matrix;
-    const Kinematics kinematics = kernel.material(cell).kinematics();
     for (const CellContribution *contribution : cell_contributions)
-      contribution->add_to_cell(
-        cell, scratch.u, kinematics, with_matrix, data.matrix, data.residual);
+      contribution->add_to_cell(cell, scratch, data);
     if (contributions_to_reduced)
       {
         block->reduced.add(1., data.matrix);
@@ -137,7 +90,7 @@ namespace ssc
 #ifdef DEBUG
     // every law and contribution derives from an energy: the cell tangent
     // is its Hessian, so it must be symmetric
-    if (with_matrix)
+    if (scratch.with_matrix)
       {
         const double scale = data.matrix.linfty_norm();
         for (unsigned int i = 0; i < n; ++i)
@@ -158,27 +111,29 @@ namespace ssc
                         const TrilinosWrappers::MPI::Vector *w,
                         const Function<3>                   *body_force,
                         const bool                           with_matrix,
-                        const std::function<void(const CellData &)> &copier,
+                        const std::function<void(const CellCopy &)> &copier,
                         const bool with_pressure) const
   {
-    const AssemblyScratch sample(field.mapping(),
-                                 field.fe(),
-                                 kernel.quadrature(),
-                                 VolumeKernel::update_flags());
-    using Iterator = DoFHandler<3>::active_cell_iterator;
+    CellScratch sample(field.mapping(),
+                       field.fe(),
+                       kernel.quadrature(),
+                       VolumeKernel::update_flags());
+    sample.body_force    = body_force;
+    sample.with_matrix   = with_matrix;
+    sample.with_pressure = with_pressure;
+    using Iterator       = DoFHandler<3>::active_cell_iterator;
     // only the locally owned cells: mesh_loop calls the copier for every
     // cell of its range, also where it skips the worker, and would hand it
     // the copy data of an earlier cell
     MeshWorker::mesh_loop(
       filter_iterators(field.dof_handler().active_cell_iterators(),
                        IteratorFilters::LocallyOwnedCell()),
-      [&](const Iterator &cell, AssemblyScratch &scratch, CellData &data) {
-        cell_work(
-          cell, scratch, data, u, w, body_force, with_matrix, with_pressure);
+      [&](const Iterator &cell, CellScratch &scratch, CellCopy &data) {
+        cell_work(cell, scratch, data, u, w);
       },
       copier,
       sample,
-      CellData(),
+      CellCopy(),
       MeshWorker::assemble_own_cells);
   }
 
@@ -216,7 +171,7 @@ namespace ssc
       nullptr,
       body_force,
       matrix != nullptr,
-      [&](const CellData &data) {
+      [&](const CellCopy &data) {
         if (data.inverted)
           ++inverted;
         else
@@ -261,7 +216,7 @@ namespace ssc
   {
     const FiniteElement<3> &fe = field.fe();
     Tensor<1, 3>            force;
-    loop(u, &w, body_force, false, [&](const CellData &data) {
+    loop(u, &w, body_force, false, [&](const CellCopy &data) {
       if (data.skipped || data.inverted)
         return;
       for (unsigned int i = 0; i < data.dofs.size(); ++i)

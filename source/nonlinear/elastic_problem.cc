@@ -26,7 +26,7 @@ namespace ssc
   double
   ElasticProblem::rhs_norm() const
   {
-    return system.rhs().l2_norm();
+    return system.linearised().rhs.l2_norm();
   }
 
 
@@ -49,25 +49,14 @@ namespace ssc
   void
   ElasticProblem::shift_tangent(const double shift)
   {
-    // read the diagonal before the first add leaves the matrix uncompressed
-    TrilinosWrappers::SparseMatrix  &K = system.tangent();
-    const AffineConstraints<double> &constraints =
-      system.constraints().increment();
-    std::vector<std::pair<types::global_dof_index, double>> additions;
-    for (const types::global_dof_index row :
-         system.field().locally_owned_dofs())
-      if (!constraints.is_constrained(row))
-        additions.emplace_back(row, shift * K.diag_element(row));
-    for (const auto &[row, value] : additions)
-      K.add(row, row, value);
-    K.compress(VectorOperation::add);
+    system.shift_tangent(shift);
   }
 
 
   ElasticProblem::VectorType
   ElasticProblem::free_update() const
   {
-    VectorType du(system.update());
+    VectorType du(system.linearised().update);
     system.constraints().increment().set_zero(du);
     return du;
   }
@@ -80,7 +69,7 @@ namespace ssc
     // of the condensed tangent
     const VectorType du = free_update();
     VectorType       K_du(du);
-    system.tangent().vmult(K_du, du);
+    system.linearised().tangent.vmult(K_du, du);
     const double norm = du * du;
     return norm > 0 ? (du * K_du) / norm : 0.;
   }
@@ -90,7 +79,7 @@ namespace ssc
   ElasticProblem::slope_along_update() const
   {
     // the right-hand side is -r, with zeros on the constrained rows
-    return -(system.rhs() * system.update());
+    return -(system.linearised().rhs * system.linearised().update);
   }
 
 
@@ -105,7 +94,7 @@ namespace ssc
   ElasticProblem::set_state_from_stored(const double step)
   {
     VectorType u(stored_state);
-    u.add(step, system.update());
+    u.add(step, system.linearised().update);
     system.field().set_solution(u);
   }
 

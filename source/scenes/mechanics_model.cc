@@ -1,5 +1,5 @@
-#include <ssc/model_size.h>
 #include <ssc/scenes/mechanics_model.h>
+#include <ssc/scenes/model_size.h>
 
 namespace ssc
 {
@@ -31,11 +31,13 @@ namespace ssc
           << " hexahedra over " << parameters.layers.n_layers() << " layers"
           << std::endl;
 
-    elastic_system = std::make_unique<ElasticSystem>(*background_mesh,
-                                                     parameters.layers,
-                                                     parameters.elasticity,
-                                                     timer,
-                                                     &timed_pcout);
+    elastic_system =
+      std::make_unique<ElasticSystem>(*background_mesh,
+                                      LayerMaterials(parameters.layers,
+                                                     parameters.materials),
+                                      parameters.elasticity,
+                                      timer,
+                                      &timed_pcout);
     {
       TimerOutput::Scope t(timer, "setup");
       elastic_system->field().distribute_dofs();

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include <ssc/scenes/punch_loading.h>
@@ -9,6 +10,133 @@
 
 namespace ssc
 {
+  namespace
+  {
+    /// Throws unless skin surface nodes lie under the punch and, for a
+    /// rectangle, the corners of its face are nodes (no cells cut).
+    void
+    check_punch_nodes(const PunchParameters &punch,
+                      const ElasticSystem   &system,
+                      const double           symmetry_factor,
+                      const std::function<bool(const Point<3> &)> &on_punch)
+    {
+      const double a = punch.radius;
+      // a punch between the surface nodes would hold nothing and report a
+      // zero force; a rectangle whose edges cut through cells would press
+      // on a smaller, jagged face
+      const bool          rectangle = punch.shape == PunchShape::rectangle;
+      unsigned int        n_under   = 0;
+      std::array<bool, 4> corner_found{};
+      for (const auto &cell :
+           system.field().dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && face->boundary_id() == BoundaryId::top)
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  const Point<3> &p = face->vertex(v);
+                  n_under += on_punch(p);
+                  // corners numbered by the signs of x and y
+                  if (std::abs(std::abs(p[0]) - punch.length / 2) < 1e-9 &&
+                      std::abs(std::abs(p[1]) - punch.width / 2) < 1e-9)
+                    corner_found[(p[0] > 0) + 2 * (p[1] > 0)] = true;
+                }
+      const MPI_Comm communicator =
+        system.field().triangulation().get_communicator();
+      if (Utilities::MPI::sum(n_under, communicator) == 0)
+        {
+          std::ostringstream message;
+          message << "Punch/Radius = " << a << " mm"
+                  << (punch.tied_region == PunchTiedRegion::flat_face ?
+                        " (its flat face: Radius - Edge radius = " +
+                          std::to_string(a - punch.edge_radius) + " mm)" :
+                        std::string())
+                  << ": no mesh node of the skin surface lies under the "
+                     "punch, so it would press on nothing. Refine the mesh "
+                     "there (Mesh/Cell size, Mesh/Region of interest) or "
+                     "enlarge the punch.";
+          AssertThrow(rectangle, ExcMessage(message.str()));
+        }
+      if (rectangle)
+        {
+          unsigned int n_corners = 0; // each found on some process
+          for (const bool found : corner_found)
+            n_corners += Utilities::MPI::max(static_cast<unsigned int>(found),
+                                             communicator);
+          std::ostringstream message;
+          message << "Punch/Shape = rectangle: the corners (+-"
+                  << punch.length / 2 << ", +-" << punch.width / 2
+                  << ") of the probe's face are not all nodes of the skin "
+                     "surface, so its edges would cut through cells. Put mesh "
+                     "lines there: Mesh/Core half width = Length/2, Core half "
+                     "width y = Width/2 and Grading ratio > 1.";
+          // a quarter model has the corner x > 0, y > 0 only
+          AssertThrow(n_corners == (symmetry_factor > 1 ? 1 : 4),
+                      ExcMessage(message.str()));
+        }
+    }
+
+
+    /// The Coulomb friction on the punch's face, attached to @p system.
+    std::unique_ptr<PunchFriction>
+    attach_face_friction(const Parameters &parameters,
+                         ElasticSystem    &system,
+                         const std::function<bool(const Point<3> &)> &on_punch,
+                         ConditionalOStream                          &pcout)
+    {
+      const PunchParameters         &punch = parameters.punch;
+      std::unique_ptr<PunchFriction> face_friction =
+        std::make_unique<PunchFriction>(
+          punch.friction_coefficient,
+          punch.friction_penalty,
+          parameters.layers.layer(0).youngs_modulus,
+          system.field().dof_handler(),
+          system.field().mapping(),
+          BoundaryId::top,
+          on_punch,
+          [&system]() { return system.nodal_residual(); });
+      system.attach(*face_friction);
+      pcout << "Punch friction: " << face_friction->n_nodes()
+            << " skin nodes under the face, mu = " << punch.friction_coefficient
+            << std::endl;
+      return face_friction;
+    }
+
+
+    /// The contact of the skin with the punch's rounded edge, attached to
+    /// @p system.
+    std::unique_ptr<RigidPunchContact>
+    attach_edge_contact(const Parameters                            &parameters,
+                        ElasticSystem                               &system,
+                        const std::function<bool(const Point<3> &)> &on_punch,
+                        ConditionalOStream                          &pcout)
+    {
+      const PunchParameters &punch = parameters.punch;
+      const double           a     = punch.radius;
+      // the surface faces that wrapping around the edge can bring into
+      // contact: up to a radius plus two edge radii beyond the rim
+      const double reach = 2. * a + 2. * punch.edge_radius;
+      std::unique_ptr<RigidPunchContact> contact =
+        std::make_unique<RigidPunchContact>(
+          PunchGeometry{Point<2>(0, 0), a, punch.edge_radius},
+          punch.contact_penalty,
+          parameters.layers.layer(0).youngs_modulus,
+          reach,
+          system.field().dof_handler(),
+          system.field().mapping(),
+          BoundaryId::top,
+          on_punch,
+          [&system]() { return system.constraints().master_dof(0); });
+      system.attach(*contact);
+      pcout << "Edge contact: " << contact->n_faces()
+            << " surface faces within " << reach
+            << " mm of the axis, edge radius " << punch.edge_radius << " mm"
+            << std::endl;
+      return contact;
+    }
+  } // namespace
+
+
   PunchLoading::PunchLoading(const Parameters   &parameters,
                              ElasticSystem      &system,
                              TimerOutput        &timer,
@@ -19,61 +147,8 @@ namespace ssc
   {
     TimerOutput::Scope     t(timer, "setup");
     const PunchParameters &punch = parameters.punch;
-    const double           a     = punch.radius;
     const auto on_punch = [punch](const Point<3> &p) { return punch.ties(p); };
-    // a punch between the surface nodes would hold nothing and report a
-    // zero force; a rectangle whose edges cut through cells would press
-    // on a smaller, jagged face
-    const bool          rectangle = punch.shape == PunchShape::rectangle;
-    unsigned int        n_under   = 0;
-    std::array<bool, 4> corner_found{};
-    for (const auto &cell :
-         system.field().dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && face->boundary_id() == BoundaryId::top)
-            for (const unsigned int v : face->vertex_indices())
-              {
-                const Point<3> &p = face->vertex(v);
-                n_under += on_punch(p);
-                // corners numbered by the signs of x and y
-                if (std::abs(std::abs(p[0]) - punch.length / 2) < 1e-9 &&
-                    std::abs(std::abs(p[1]) - punch.width / 2) < 1e-9)
-                  corner_found[(p[0] > 0) + 2 * (p[1] > 0)] = true;
-              }
-    const MPI_Comm communicator =
-      system.field().triangulation().get_communicator();
-    if (Utilities::MPI::sum(n_under, communicator) == 0)
-      {
-        std::ostringstream message;
-        message << "Punch/Radius = " << a << " mm"
-                << (punch.tied_region == PunchTiedRegion::flat_face ?
-                      " (its flat face: Radius - Edge radius = " +
-                        std::to_string(a - punch.edge_radius) + " mm)" :
-                      std::string())
-                << ": no mesh node of the skin surface lies under the "
-                   "punch, so it would press on nothing. Refine the mesh "
-                   "there (Mesh/Cell size, Mesh/Region of interest) or "
-                   "enlarge the punch.";
-        AssertThrow(rectangle, ExcMessage(message.str()));
-      }
-    if (rectangle)
-      {
-        unsigned int n_corners = 0; // each found on some process
-        for (const bool found : corner_found)
-          n_corners +=
-            Utilities::MPI::max(static_cast<unsigned int>(found), communicator);
-        std::ostringstream message;
-        message << "Punch/Shape = rectangle: the corners (+-"
-                << punch.length / 2 << ", +-" << punch.width / 2
-                << ") of the probe's face are not all nodes of the skin "
-                   "surface, so its edges would cut through cells. Put mesh "
-                   "lines there: Mesh/Core half width = Length/2, Core half "
-                   "width y = Width/2 and Grading ratio > 1.";
-        // a quarter model has the corner x > 0, y > 0 only
-        AssertThrow(n_corners == (symmetry_factor > 1 ? 1 : 4),
-                    ExcMessage(message.str()));
-      }
+    check_punch_nodes(punch, system, symmetry_factor, on_punch);
     std::vector<DirichletCondition> conditions =
       support_conditions(parameters.elasticity.sides, parameters.mesh.symmetry);
     std::vector<TiedCondition> ties;
@@ -101,42 +176,9 @@ namespace ssc
     punch_condition = by_force ? conditions.size() : conditions.size() - 1;
 
     if (punch.contact == PunchContact::friction)
-      {
-        face_friction = std::make_unique<PunchFriction>(
-          punch.friction_coefficient,
-          punch.friction_penalty,
-          parameters.layers.layer(0).youngs_modulus,
-          system.field().dof_handler(),
-          system.field().mapping(),
-          BoundaryId::top,
-          on_punch,
-          [&system]() { return system.nodal_residual(); });
-        system.attach(*face_friction);
-        pcout << "Punch friction: " << face_friction->n_nodes()
-              << " skin nodes under the face, mu = "
-              << punch.friction_coefficient << std::endl;
-      }
+      face_friction = attach_face_friction(parameters, system, on_punch, pcout);
     if (punch.edge_contact)
-      {
-        // the surface faces that wrapping around the edge can bring into
-        // contact: up to a radius plus two edge radii beyond the rim
-        const double reach = 2. * a + 2. * punch.edge_radius;
-        contact            = std::make_unique<RigidPunchContact>(
-          PunchGeometry{Point<2>(0, 0), a, punch.edge_radius},
-          punch.contact_penalty,
-          parameters.layers.layer(0).youngs_modulus,
-          reach,
-          system.field().dof_handler(),
-          system.field().mapping(),
-          BoundaryId::top,
-          on_punch,
-          [&system]() { return system.constraints().master_dof(0); });
-        system.attach(*contact);
-        pcout << "Edge contact: " << contact->n_faces()
-              << " surface faces within " << reach
-              << " mm of the axis, edge radius " << punch.edge_radius << " mm"
-              << std::endl;
-      }
+      contact = attach_edge_contact(parameters, system, on_punch, pcout);
     system.setup(conditions, ties);
   }
 
@@ -146,7 +188,7 @@ namespace ssc
   {
     if (by_force)
       {
-        system.apply_constraints();
+        system.constraints().apply(system.field());
         system.loads().nodal_forces = {
           {system.constraints().master_dof(0), -load / symmetry_factor}};
       }

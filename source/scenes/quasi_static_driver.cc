@@ -62,7 +62,7 @@ namespace ssc
 
     LoadStepper stepper(newton);
     apply_load(0.);
-    system.apply_constraints();
+    system.constraints().apply(system.field());
     double position = 0., increment = first_increment;
     for (unsigned int k = 0; k < targets.size(); ++k)
       {
@@ -100,16 +100,18 @@ namespace ssc
     const auto total = [](const std::vector<unsigned int> &counts) {
       return std::accumulate(counts.begin(), counts.end(), 0u);
     };
-    nlohmann::ordered_json solver = {{"linear_iterations", total(cg)},
-                                     {"linear_iterations_per_step", cg},
-                                     {"newton_iterations", total(newton)},
-                                     {"newton_iterations_per_step", newton},
-                                     {"load_cuts_per_step", cuts},
-                                     {"wall_time_per_step", times}};
-    if (system.factorizations() > 0)
-      solver["cholesky_factorizations"] = system.factorizations();
-    if (system.indefinite_factorizations() > 0)
-      solver["indefinite_factorizations"] = system.indefinite_factorizations();
+    nlohmann::ordered_json solver        = {{"linear_iterations", total(cg)},
+                                            {"linear_iterations_per_step", cg},
+                                            {"newton_iterations", total(newton)},
+                                            {"newton_iterations_per_step", newton},
+                                            {"load_cuts_per_step", cuts},
+                                            {"wall_time_per_step", times}};
+    const LinearSolver    &linear_solver = system.solver();
+    if (linear_solver.factorizations() > 0)
+      solver["cholesky_factorizations"] = linear_solver.factorizations();
+    if (linear_solver.indefinite_factorizations() > 0)
+      solver["indefinite_factorizations"] =
+        linear_solver.indefinite_factorizations();
     if (!linear())
       solver["final_residuals_per_step"] = residuals;
     else

@@ -5,13 +5,10 @@
 #include <string>
 #include <vector>
 
+#include <ssc/scenes/identification_parameters.h>
+
 namespace ssc
 {
-  /// The layers of a trial, from the top, as the data and the
-  /// identification name them.
-  inline constexpr std::array<const char *, 3> trial_layer_names{
-    {"skin", "fat", "muscle"}};
-
   /**
    * One in vivo probe indentation trial of the MULTIS study
    * (data/multis/README.md): the layer thicknesses under the probe, the

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include <ssc/identification/identification_parameters.h>
 #include <ssc/identification/indentation_trials.h>
 #include <ssc/identification/prediction_errors.h>
 #include <ssc/identification/probe_forward_model.h>
+#include <ssc/scenes/identification_parameters.h>
 
 namespace ssc
 {

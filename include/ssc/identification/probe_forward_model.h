@@ -9,7 +9,7 @@
 #include <vector>
 
 #include <ssc/identification/indentation_trials.h>
-#include <ssc/parameters.h>
+#include <ssc/scenes/parameters.h>
 
 namespace ssc
 {

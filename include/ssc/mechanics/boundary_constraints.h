@@ -98,6 +98,11 @@ namespace ssc
     void
     set_dirichlet_scale(const double factor);
 
+    /// Sets the constrained entries of @p field's solution: prescribed
+    /// values (at the current Dirichlet scale), hanging nodes and ties.
+    void
+    apply(DisplacementField &field) const;
+
     const AffineConstraints<double> &
     prescribed() const
     {
@@ -146,6 +151,34 @@ namespace ssc
     /// agreed on by all ranks.
     types::global_dof_index
     find_master(const TiedCondition &tie) const;
+
+    /// Finds the ties' masters, the locally relevant dofs and their
+    /// components.
+    void
+    find_relevant_dofs(const std::vector<TiedCondition> &ties);
+
+    /// Adds the Dirichlet conditions to the prescribed constraints and
+    /// records their dofs and values (the first that claims a dof wins).
+    void
+    add_dirichlet_conditions(const std::vector<DirichletCondition> &conditions);
+
+    /// Constrains each tie's master alike on every rank if a Dirichlet
+    /// condition holds it on some rank.
+    void
+    constrain_tie_masters(const std::vector<DirichletCondition> &conditions);
+
+    /// Adds the ties u_i = u_master to the prescribed constraints and
+    /// records their dofs.
+    void
+    add_ties(const std::vector<DirichletCondition> &conditions,
+             const std::vector<TiedCondition>      &ties);
+
+    /// Builds the homogeneous constraints: hanging nodes, zero Dirichlet
+    /// values and the ties.
+    void
+    make_homogeneous_constraints(
+      const std::vector<DirichletCondition> &conditions,
+      const std::vector<TiedCondition>      &ties);
 
     /// Rebuilds @p target from the hanging-node constraints, the Dirichlet
     /// dofs with the inhomogeneity @p value_of (dof, prescribed value at

@@ -3,10 +3,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
-
-#include <ssc/materials/material.h>
+#include <ssc/mechanics/cell_assembly_data.h>
 
 namespace ssc
 {
@@ -24,19 +21,17 @@ namespace ssc
     virtual ~CellContribution() = default;
 
     /**
-     * Adds the tangent to @p cell_matrix (if @p with_matrix; it may be left
-     * out when only the residual is wanted) and the internal force minus
-     * the load to @p cell_residual, at the cell's displacement values @p u,
-     * for the locally owned @p cell. @p kinematics is that of the cell's own
-     * law: a contribution inside a small-strain cell is linear too.
+     * Adds the tangent to @p copy.matrix (if @p scratch.with_matrix; it may
+     * be left out when only the residual is wanted) and the internal force
+     * minus the load to @p copy.residual, at the cell's displacement values
+     * @p scratch.u, for the locally owned @p cell. @p scratch.kinematics is
+     * that of the cell's own law: a contribution inside a small-strain cell
+     * is linear too.
      */
     virtual void
     add_to_cell(const DoFHandler<3>::active_cell_iterator &cell,
-                const Vector<double>                      &u,
-                const Kinematics                           kinematics,
-                const bool                                 with_matrix,
-                FullMatrix<double>                        &cell_matrix,
-                Vector<double> &cell_residual) const = 0;
+                const CellScratch                         &scratch,
+                CellCopy                                  &copy) const = 0;
   };
 } // namespace ssc
 

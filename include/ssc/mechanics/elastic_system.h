@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <ssc/materials/layer_materials.h>
+#include <ssc/materials/quadrature_history.h>
 #include <ssc/mechanics/boundary_constraints.h>
 #include <ssc/mechanics/displacement_field.h>
 #include <ssc/mechanics/elasticity_parameters.h>
@@ -32,6 +33,18 @@ namespace ssc
     const Function<3> *body_force = nullptr;
   };
 
+  /// The last linearisation of an ElasticSystem.
+  struct LinearisedSystem
+  {
+    /// The tangent (with the constraints of the last assembly).
+    TrilinosWrappers::SparseMatrix tangent;
+    /// The right-hand side -r (zero on constrained rows).
+    TrilinosWrappers::MPI::Vector rhs;
+    /// The last update (locally owned entries).
+    TrilinosWrappers::MPI::Vector update;
+  };
+
+
   /**
    * The mechanical system of the layered volume: the displacement field,
    * its constraints, the growth field, the layers' laws, the one assembly
@@ -45,10 +58,11 @@ namespace ssc
   class ElasticSystem
   {
   public:
-    /// The system of @p layers on @p mesh; long linear solves report
+    /// The system of the layers' laws @p materials (indexed by the cells'
+    /// material_id) on @p mesh; long linear solves report
     /// their progress on @p progress (if given).
     ElasticSystem(const BackgroundMesh       &mesh,
-                  const LayerStack           &layers,
+                  LayerMaterials              materials,
                   const ElasticityParameters &parameters,
                   TimerOutput                &timer,
                   ConditionalOStream         *progress = nullptr);
@@ -96,14 +110,16 @@ namespace ssc
     attach(DofContribution &contribution);
 
     /// The current state solves the load increment: the attached dof
-    /// contributions' history moves on to it, unless one of them asks for
+    /// contributions' history and the laws' quadrature-point history move
+    /// on to it, unless one of them asks for
     /// the increment to be solved again (false; see
     /// NonlinearProblem::accept_state()).
     bool
     accept_state();
 
-    /// The load increment is abandoned: the attached dof contributions go
-    /// back to their last accepted increment (NonlinearProblem::
+    /// The load increment is abandoned: the attached dof contributions and
+    /// the laws' history go back to their last accepted increment
+    /// (NonlinearProblem::
     /// reject_state()).
     void
     reject_state();
@@ -129,11 +145,6 @@ namespace ssc
     {
       return external_loads;
     }
-
-    /// Sets the constrained entries of the solution: prescribed values (at
-    /// the current Dirichlet scale), hanging nodes and ties.
-    void
-    apply_constraints();
 
     /**
      * Assembles the right-hand side -r at the current solution and, with
@@ -163,20 +174,11 @@ namespace ssc
     LinearSolveReport
     solve_linear();
 
-    /// Cholesky factorisations computed so far (Linear solver/
-    /// Preconditioner = cholesky; 0 otherwise).
-    unsigned int
-    factorizations() const
+    /// The linear solver, for its statistics (factorisations).
+    const LinearSolver &
+    solver() const
     {
-      return linear_solver.factorizations();
-    }
-
-    /// L D L^T factorisations of tangents that were not positive definite
-    /// (Linear solver/Preconditioner = cholesky; 0 otherwise).
-    unsigned int
-    indefinite_factorizations() const
-    {
-      return linear_solver.indefinite_factorizations();
+      return linear_solver;
     }
 
     /**
@@ -190,48 +192,35 @@ namespace ssc
     Tensor<1, 3>
     reaction(const unsigned int condition);
 
-    /// The change of the body's volume, the integral of det F - 1 (div u
-    /// for small-strain layers), mm^3 (collective).
-    double
-    volume_change() const;
-
-    /// The last assembled tangent (Newton's globalisation shifts it).
-    TrilinosWrappers::SparseMatrix &
-    tangent()
+    /// The last assembled tangent, right-hand side and update.
+    const LinearisedSystem &
+    linearised() const
     {
-      return matrix;
+      return linearisation;
     }
 
-    /// The last assembled right-hand side -r (zero on constrained rows).
-    const TrilinosWrappers::MPI::Vector &
-    rhs() const
-    {
-      return system_rhs;
-    }
-
-    /// The last update (locally owned entries).
-    const TrilinosWrappers::MPI::Vector &
-    update() const
-    {
-      return last_update;
-    }
+    /// Adds @p shift times its own diagonal to the tangent on the rows of
+    /// the free unknowns (Newton's globalisation).
+    void
+    shift_tangent(const double shift);
 
   private:
     const ElasticityParameters &parameters;
     TimerOutput                &timer;
     LayerMaterials              layer_materials;
-    DisplacementField           displacement;
-    BoundaryConstraints         boundary_constraints;
-    GrowthField                 growth_field;
-    VolumeKernel                kernel;
-    SystemAssembler             assembler;
-    LinearSolver                linear_solver;
+    /// History of the laws that keep some, committed with each accepted
+    /// load increment and restored when one is abandoned.
+    QuadratureHistory   history;
+    DisplacementField   displacement;
+    BoundaryConstraints boundary_constraints;
+    GrowthField         growth_field;
+    VolumeKernel        kernel;
+    SystemAssembler     assembler;
+    LinearSolver        linear_solver;
     /// The displacement-pressure system (Linear solver/Method = block).
     std::unique_ptr<PressureSystem> pressure_system;
     Loads                           external_loads;
-    TrilinosWrappers::SparseMatrix  matrix;
-    TrilinosWrappers::MPI::Vector   system_rhs;
-    TrilinosWrappers::MPI::Vector   last_update;
+    LinearisedSystem                linearisation;
     /// the attached dof contributions, told of converged increments
     std::vector<DofContribution *> dof_contributions;
   };

@@ -24,7 +24,7 @@ namespace ssc
   /**
    * The stiffness of membranes (septa, codimension 1) or cables (ligaments,
    * codimension 2) embedded in the background mesh without degrees of
-   * freedom of their own (DESIGN.md §4): their displacement is the
+   * freedom of their own (docs/architecture.md §9): their displacement is the
    * background field at their quadrature points, so their energy (the
    * MembraneLaw or CableLaw) enters the background cells through the
    * background shape-function gradients there. Small strain inside
@@ -53,11 +53,8 @@ namespace ssc
 
     void
     add_to_cell(const DoFHandler<3>::active_cell_iterator &cell,
-                const Vector<double>                      &u,
-                const Kinematics                           kinematics,
-                const bool                                 with_matrix,
-                FullMatrix<double>                        &cell_matrix,
-                Vector<double> &cell_residual) const override;
+                const CellScratch                         &scratch,
+                CellCopy                                  &copy) const override;
 
     /**
      * Lets membranes grow with the material around them (septa that

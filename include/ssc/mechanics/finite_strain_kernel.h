@@ -10,8 +10,10 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ssc/materials/material.h>
-#include <ssc/mechanics/cell_pressure_block.h>
+#include <vector>
+
+#include <ssc/materials/layer_materials.h>
+#include <ssc/mechanics/cell_assembly_data.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/growth_field.h>
 
@@ -36,28 +38,67 @@ namespace ssc
   class FiniteStrainKernel
   {
   public:
-    explicit FiniteStrainKernel(const ElasticityParameters &parameters);
+    /// The kernel of the layers' laws @p materials, with the growth of
+    /// @p growth.
+    FiniteStrainKernel(const ElasticityParameters &parameters,
+                       const LayerMaterials       &materials,
+                       const GrowthField          &growth);
 
-    /// Residual @p cell_residual and (if @p with_matrix) tangent @p
-    /// cell_matrix of @p cell (@p fe_values reinit'ed on it) at its dof
-    /// values @p u for @p material. Returns false if the cell is inverted
-    /// (det F or the projected dilatation <= 0 at a quadrature point).
-    /// With @p block (mixed formulations, with the matrix) also the
-    /// tangent's displacement-pressure structure.
+    /// Residual into @p copy.residual and (if @p scratch.with_matrix)
+    /// tangent into @p copy.matrix of @p cell (@p scratch.fe_values
+    /// reinit'ed on it) at its dof values @p scratch.u. Returns false if
+    /// the cell is inverted (det F or the projected dilatation <= 0 at a
+    /// quadrature point). With @p scratch.with_pressure (mixed
+    /// formulations, with the matrix) also the tangent's
+    /// displacement-pressure structure into @p copy.pressure.
     bool
     assemble(const DoFHandler<3>::active_cell_iterator &cell,
-             const FEValues<3>                         &fe_values,
-             const Material                            &material,
-             const GrowthField                         &growth,
-             const Function<3>                         *body_force,
-             const Vector<double>                      &u,
-             const bool                                 with_matrix,
-             FullMatrix<double>                        &cell_matrix,
-             Vector<double>                            &cell_residual,
-             CellPressureBlock                         *block = nullptr) const;
+             const CellScratch                         &scratch,
+             CellCopy                                  &copy) const;
 
   private:
+    struct ProjectedDilatation;
+
+    /// F and the growth ratio gamma = 1 + g at the quadrature points;
+    /// false if det F <= 0 somewhere.
+    bool
+    deformation_gradients(const DoFHandler<3>::active_cell_iterator &cell,
+                          const CellScratch                         &scratch,
+                          std::vector<Tensor<2, 3>>                 &F,
+                          std::vector<double> &gamma) const;
+
+    /// The projected dilatation theta and pressure of the mixed
+    /// formulations; false if theta <= 0 somewhere.
+    bool
+    project_dilatation(const DoFHandler<3>::active_cell_iterator &cell,
+                       const CellScratch                         &scratch,
+                       const std::vector<Tensor<2, 3>>           &F,
+                       const std::vector<double>                 &gamma,
+                       ProjectedDilatation &projection) const;
+
+    /// The quadrature loop: residual and tangent (isochoric, geometric and
+    /// the volumetric share at the points) and B = int q_a J div(phi_i).
+    void
+    integrate(const DoFHandler<3>::active_cell_iterator &cell,
+              const CellScratch                         &scratch,
+              const std::vector<Tensor<2, 3>>           &F,
+              const std::vector<double>                 &gamma,
+              const ProjectedDilatation                 &projection,
+              FullMatrix<double>                        &B,
+              CellCopy                                  &copy) const;
+
+    /// The condensed volumetric part (1 - beta) B^T M^{-1} H M^{-1} B and
+    /// the pressure block, if asked for.
+    void
+    add_projected_volumetric(const DoFHandler<3>::active_cell_iterator &cell,
+                             const CellScratch                         &scratch,
+                             const ProjectedDilatation &projection,
+                             const FullMatrix<double>  &B,
+                             CellCopy                  &copy) const;
+
     const ElasticityParameters &parameters;
+    const LayerMaterials       &materials;
+    const GrowthField          &growth;
   };
 } // namespace ssc
 

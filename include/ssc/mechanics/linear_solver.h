@@ -12,13 +12,13 @@
 #include <memory>
 #include <string>
 
+#include <ssc/linear_algebra/cholesky_preconditioner.h>
+#include <ssc/linear_algebra/ldlt_preconditioner.h>
+#include <ssc/linear_algebra/truncated_cg.h>
 #include <ssc/mechanics/boundary_constraints.h>
-#include <ssc/mechanics/cholesky_preconditioner.h>
 #include <ssc/mechanics/displacement_field.h>
-#include <ssc/mechanics/ldlt_preconditioner.h>
 #include <ssc/mechanics/linear_solver_parameters.h>
 #include <ssc/mechanics/pressure_system.h>
-#include <ssc/mechanics/truncated_cg.h>
 
 class Epetra_MultiVector;
 

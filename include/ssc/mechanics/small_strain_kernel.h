@@ -11,8 +11,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ssc/materials/material.h>
-#include <ssc/mechanics/cell_pressure_block.h>
+#include <ssc/materials/layer_materials.h>
+#include <ssc/mechanics/cell_assembly_data.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/growth_field.h>
 
@@ -31,25 +31,37 @@ namespace ssc
   class SmallStrainKernel
   {
   public:
+    /// The kernel of the layers' laws @p materials, with the growth
+    /// eigenstrain of @p growth, on the cell quadrature @p quadrature.
     SmallStrainKernel(const ElasticityParameters &parameters,
-                      const Quadrature<3>        &quadrature);
+                      const Quadrature<3>        &quadrature,
+                      const LayerMaterials       &materials,
+                      const GrowthField          &growth);
 
-    /// K and f of @p cell (@p fe_values reinit'ed on it) for @p material;
-    /// with @p block (mixed formulations only) also K's
-    /// displacement-pressure structure.
+    /// K into @p copy.matrix and f into @p copy.residual for @p cell
+    /// (@p scratch.fe_values reinit'ed on it); with @p
+    /// scratch.with_pressure (mixed formulations only) also K's
+    /// displacement-pressure structure into @p copy.pressure.
     void
     assemble(const DoFHandler<3>::active_cell_iterator &cell,
-             const FEValues<3>                         &fe_values,
-             const Material                            &material,
-             const GrowthField                         &growth,
-             const Function<3>                         *body_force,
-             FullMatrix<double>                        &cell_matrix,
-             Vector<double>                            &cell_rhs,
-             CellPressureBlock                         *block = nullptr) const;
+             const CellScratch                         &scratch,
+             CellCopy                                  &copy) const;
 
   private:
+    struct ModeIntegrals;
+
+    /// The quadrature loop: the integrals over the strain modes into
+    /// @p integrals and the body force's load into @p cell_rhs.
+    void
+    integrate_modes(const DoFHandler<3>::active_cell_iterator &cell,
+                    const CellScratch                         &scratch,
+                    ModeIntegrals                             &integrals,
+                    Vector<double>                            &cell_rhs) const;
+
     const ElasticityParameters &parameters;
     const Quadrature<3>        &quadrature;
+    const LayerMaterials       &materials;
+    const GrowthField          &growth;
   };
 } // namespace ssc
 

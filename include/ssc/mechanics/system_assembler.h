@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+#include <ssc/mechanics/cell_assembly_data.h>
 #include <ssc/mechanics/cell_contribution.h>
 #include <ssc/mechanics/cell_pressure_block.h>
 #include <ssc/mechanics/displacement_field.h>
@@ -80,32 +81,15 @@ namespace ssc
                         &component_of) const;
 
   private:
-    /// What one cell gives.
-    struct CellData
-    {
-      DoFHandler<3>::active_cell_iterator  cell;
-      FullMatrix<double>                   matrix;
-      Vector<double>                       residual;
-      std::vector<types::global_dof_index> dofs;
-      /// the displacement-pressure structure (if asked for)
-      CellPressureBlock pressure;
-      bool              inverted = false;
-      bool              skipped  = false;
-    };
-
     /// The cell's residual (and tangent) at @p u into @p data, the
     /// contributions included; a cell whose weight @p w (if given) vanishes
     /// is skipped.
-    template <typename ScratchData>
     void
     cell_work(const DoFHandler<3>::active_cell_iterator &cell,
-              ScratchData                               &scratch,
-              CellData                                  &data,
+              CellScratch                               &scratch,
+              CellCopy                                  &data,
               const TrilinosWrappers::MPI::Vector       &u,
-              const TrilinosWrappers::MPI::Vector       *w,
-              const Function<3>                         *body_force,
-              const bool                                 with_matrix,
-              const bool with_pressure = false) const;
+              const TrilinosWrappers::MPI::Vector       *w) const;
 
     /// Runs the loop over the locally owned cells with @p copier.
     void
@@ -113,7 +97,7 @@ namespace ssc
          const TrilinosWrappers::MPI::Vector         *w,
          const Function<3>                           *body_force,
          const bool                                   with_matrix,
-         const std::function<void(const CellData &)> &copier,
+         const std::function<void(const CellCopy &)> &copier,
          const bool with_pressure = false) const;
 
     const DisplacementField              &field;

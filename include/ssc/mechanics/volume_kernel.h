@@ -51,25 +51,21 @@ namespace ssc
     }
 
     /**
-     * Residual @p cell_residual and tangent @p cell_matrix (if @p
-     * with_matrix; small-strain cells always) of @p cell at its dof values
-     * @p u, @p fe_values reinit'ed here; with @p block also the tangent's
-     * displacement-pressure structure (mixed formulations). Returns false
-     * if the cell is inverted.
+     * Residual into @p copy.residual and tangent into @p copy.matrix (if
+     * @p scratch.with_matrix; small-strain cells always) of @p cell at its
+     * dof values @p scratch.u, @p scratch.fe_values reinit'ed here and
+     * @p scratch.kinematics set to the cell's law's; with @p
+     * scratch.with_pressure also the tangent's displacement-pressure
+     * structure (mixed formulations). Returns false if the cell is
+     * inverted.
      */
     bool
-    residual_and_tangent(const DoFHandler<3>::active_cell_iterator &cell,
-                         FEValues<3>                               &fe_values,
-                         const Vector<double>                      &u,
-                         const Function<3>                         *body_force,
-                         const bool                                 with_matrix,
-                         FullMatrix<double>                        &cell_matrix,
-                         Vector<double>    &cell_residual,
-                         CellPressureBlock *block = nullptr) const;
+    assemble(const DoFHandler<3>::active_cell_iterator &cell,
+             CellScratch                               &scratch,
+             CellCopy                                  &copy) const;
 
   private:
     const LayerMaterials &materials;
-    const GrowthField    &growth;
     const QGauss<3>       cell_quadrature;
     SmallStrainKernel     small_strain;
     FiniteStrainKernel    finite_strain;

@@ -26,9 +26,9 @@ namespace ssc
   };
 
   /**
-   * The procedural microstructure of the patch (DESIGN.md §5): the lobules
-   * of every adipose layer with their septa, the skin ligaments, and the
-   * embedded meshes built from them — the septa as a Triangulation<2,3> of
+   * The procedural microstructure of the patch (docs/architecture.md §9): the
+   * lobules of every adipose layer with their septa, the skin ligaments, and
+   * the embedded meshes built from them — the septa as a Triangulation<2,3> of
    * triangles (material_id = index of the septum) and the ligaments as a
    * Triangulation<1,3> of segments (material_id = index of the ligament).
    * Deterministic from the seed, so every MPI rank builds the same one.

@@ -5,8 +5,8 @@
 
 #include <string>
 
+#include <ssc/linear_algebra/truncated_cg.h>
 #include <ssc/mechanics/linear_solver.h>
-#include <ssc/mechanics/truncated_cg.h>
 
 namespace ssc
 {

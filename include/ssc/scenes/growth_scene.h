@@ -5,22 +5,13 @@
 
 #include <vector>
 
-#include <ssc/parameters.h>
+#include <ssc/scenes/growth_record.h>
+#include <ssc/scenes/parameters.h>
 #include <ssc/scenes/scene.h>
 #include <ssc/scenes/surface_metrics.h>
 
 namespace ssc
 {
-  /// What the growth scene measured, per load step.
-  struct GrowthResult
-  {
-    double                      growth_ratio    = 0; ///< g
-    double                      selected_volume = 0; ///< mm^3
-    std::vector<double>         added_volumes;       ///< mm^3, stress-free
-    std::vector<double>         volume_changes;      ///< mm^3, of the body
-    std::vector<SurfaceMetrics> metrics;
-  };
-
   /**
    * Fat growth (cellulite, aging) and fat injection (section "Growth"): the
    * selected fat takes an isotropic volumetric growth g, reached in equal

@@ -8,7 +8,7 @@
 #include <ssc/mechanics/displacement_field.h>
 #include <ssc/microstructure/microstructure.h>
 #include <ssc/output/run_output.h>
-#include <ssc/parameters.h>
+#include <ssc/scenes/parameters.h>
 #include <ssc/scenes/quasi_static_driver.h>
 
 namespace ssc

@@ -5,24 +5,12 @@
 
 #include <vector>
 
-#include <ssc/parameters.h>
+#include <ssc/scenes/indentation_record.h>
+#include <ssc/scenes/parameters.h>
 #include <ssc/scenes/scene.h>
 
 namespace ssc
 {
-  /// What the indentation scene measured.
-  struct IndentationResult
-  {
-    types::global_dof_index dofs = 0;
-    std::vector<double>     depths; ///< mm, per load step
-    std::vector<double>     forces; ///< N, per load step
-    double                  stiffness            = 0;
-    double                  half_space_stiffness = 0;
-    /// Each layer's compressive strain under the punch centre, per load
-    /// step (outer) and layer from the top (inner).
-    std::vector<std::vector<double>> layer_strains;
-  };
-
   /**
    * A rigid flat punch (cylindrical or rectangular) at the patch centre,
    * bonded or frictionless, under displacement control (the depths are

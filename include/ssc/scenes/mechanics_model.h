@@ -10,7 +10,7 @@
 #include <ssc/mechanics/elastic_system.h>
 #include <ssc/mechanics/microstructure_coupling.h>
 #include <ssc/mesh/background_mesh.h>
-#include <ssc/parameters.h>
+#include <ssc/scenes/parameters.h>
 #include <ssc/scenes/scene_run.h>
 
 namespace ssc
@@ -19,7 +19,8 @@ namespace ssc
    * What every mechanics scene builds before it loads the patch: the
    * background mesh, the elastic system on it (dofs distributed, no
    * boundary conditions yet) and the microstructure embedded in it, each
-   * timed as its phase of DESIGN.md §3 and reported in one progress line.
+   * timed as its phase of docs/architecture.md §7 and reported in one progress
+   * line.
    */
   class MechanicsModel
   {

@@ -7,9 +7,9 @@
 #include <memory>
 
 #include <ssc/mechanics/elastic_system.h>
-#include <ssc/mechanics/punch_friction.h>
-#include <ssc/mechanics/rigid_punch_contact.h>
-#include <ssc/parameters.h>
+#include <ssc/contact/punch_friction.h>
+#include <ssc/contact/rigid_punch_contact.h>
+#include <ssc/scenes/parameters.h>
 
 namespace ssc
 {

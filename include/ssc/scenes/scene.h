@@ -3,7 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <ssc/parameters.h>
+#include <ssc/scenes/parameters.h>
 
 namespace ssc
 {

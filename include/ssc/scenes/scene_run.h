@@ -11,13 +11,13 @@
 #include <vector>
 
 #include <ssc/output/run_output.h>
-#include <ssc/parameters.h>
+#include <ssc/scenes/parameters.h>
 
 namespace ssc
 {
   /**
    * What every scene does around its physics: opens output/<run name>/
-   * (log, used parameters), times the phases of DESIGN.md §3 (mesh,
+   * (log, used parameters), times the phases of docs/architecture.md §7 (mesh,
    * microstructure, embedding, setup, assembly, solve, output) and fills the
    * common part of summary.json (scene, run, mpi_ranks, timings, memory).
    */

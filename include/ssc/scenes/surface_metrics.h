@@ -81,13 +81,13 @@ namespace ssc
             const double     dimple_depth,
             const double     half_width = 0);
 
-    /// The summary.json entries of DESIGN.md §3 (max_elevation_mm,
+    /// The summary.json entries of docs/architecture.md §7 (max_elevation_mm,
     /// mean_elevation_mm, roughness_mm, dimples: count, mean and largest
     /// depth) and the uplift volume.
     nlohmann::ordered_json
     to_json() const;
 
-    /// The summary.json entry `surface` of DESIGN.md §3: Sa_mm, Sq_mm,
+    /// The summary.json entry `surface` of docs/architecture.md §7: Sa_mm, Sq_mm,
     /// Sp_mm, Sv_mm, Sz_mm (ISO 25178, Sp + Sv), Spm_mm, Svm_mm and the
     /// dimples.
     nlohmann::ordered_json

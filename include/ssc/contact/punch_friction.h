@@ -1,5 +1,5 @@
-#ifndef ssc_mechanics_punch_friction_h
-#define ssc_mechanics_punch_friction_h
+#ifndef ssc_contact_punch_friction_h
+#define ssc_contact_punch_friction_h
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>

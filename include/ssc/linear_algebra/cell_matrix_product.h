@@ -1,5 +1,5 @@
-#ifndef ssc_mechanics_cell_matrix_product_h
-#define ssc_mechanics_cell_matrix_product_h
+#ifndef ssc_linear_algebra_cell_matrix_product_h
+#define ssc_linear_algebra_cell_matrix_product_h
 
 #include <deal.II/lac/full_matrix.h>
 

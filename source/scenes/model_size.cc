@@ -6,7 +6,7 @@
 #include <ssc/mesh/background_mesh.h>
 #include <ssc/microstructure/ligaments.h>
 #include <ssc/microstructure/lobules.h>
-#include <ssc/model_size.h>
+#include <ssc/scenes/model_size.h>
 
 namespace ssc
 {

@@ -1,5 +1,5 @@
-#ifndef ssc_mechanics_truncated_cg_h
-#define ssc_mechanics_truncated_cg_h
+#ifndef ssc_linear_algebra_truncated_cg_h
+#define ssc_linear_algebra_truncated_cg_h
 
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include <ssc/mechanics/factor_operator.h>
-#include <ssc/mechanics/ldlt_preconditioner.h>
+#include <ssc/linear_algebra/factor_operator.h>
+#include <ssc/linear_algebra/ldlt_preconditioner.h>
 
 namespace ssc
 {

@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include <ssc/mechanics/truncated_cg.h>
+#include <ssc/linear_algebra/truncated_cg.h>
 
 namespace ssc
 {

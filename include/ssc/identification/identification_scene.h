@@ -1,6 +1,14 @@
-#ifndef ssc_scenes_identification_scene_h
-#define ssc_scenes_identification_scene_h
+#ifndef ssc_identification_identification_scene_h
+#define ssc_identification_identification_scene_h
 
+#include <deal.II/base/conditional_ostream.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <ssc/identification/identification_record.h>
+#include <ssc/identification/layer_moduli_fit.h>
 #include <ssc/scenes/scene.h>
 
 namespace ssc
@@ -30,6 +38,23 @@ namespace ssc
 
     void
     run();
+
+  private:
+    /// The fit's start for @p split: the springs in series fitted to the
+    /// training strains, scaled to the median stiffness (printed).
+    std::array<double, 3>
+    initial_moduli(const LayerModuliFit &fitter,
+                   const TrialSplit     &split,
+                   ConditionalOStream   &pcout) const;
+
+    /// Splits @p site's @p trials by subject, fits the moduli to the
+    /// training ones and predicts every trial with them and with the
+    /// springs-in-series baseline.
+    SiteFit
+    fit_site(const std::string                   &site,
+             const std::vector<IndentationTrial> &trials,
+             const LayerModuliFit                &fitter,
+             ConditionalOStream                  &pcout) const;
   };
 } // namespace ssc
 

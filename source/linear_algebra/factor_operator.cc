@@ -1,4 +1,4 @@
-#include <ssc/mechanics/factor_operator.h>
+#include <ssc/linear_algebra/factor_operator.h>
 
 namespace ssc
 {

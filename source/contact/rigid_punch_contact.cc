@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include <ssc/mechanics/rigid_punch_contact.h>
+#include <ssc/contact/rigid_punch_contact.h>
 
 namespace ssc
 {

@@ -7,8 +7,8 @@
 
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/microstructure/ligaments.h>
-#include <ssc/model_size.h>
-#include <ssc/parameters.h>
+#include <ssc/scenes/model_size.h>
+#include <ssc/scenes/parameters.h>
 
 namespace ssc
 {
@@ -131,6 +131,7 @@ namespace ssc
   {
     run.add_parameters(handler);
     layers.add_parameters(handler, layer_names);
+    materials.add_parameters(handler, layer_names);
     mesh.add_parameters(handler);
     elasticity.add_parameters(handler);
     punch.add_parameters(handler);
@@ -185,6 +186,7 @@ namespace ssc
     newton         = NewtonParameters();
     limits         = ResourceLimits();
     identification = IdentificationParameters();
+    materials.clear();
     add_parameters(prm, names);
     if (!file.empty())
       parse_with_includes(prm, file, /*skip_undefined=*/false);
@@ -202,6 +204,7 @@ namespace ssc
   {
     run.check();
     layers.finalise();
+    materials.check(layers);
     mesh.check();
     elasticity.check();
     punch.check();
@@ -216,7 +219,22 @@ namespace ssc
   void
   Parameters::check_consistency() const
   {
+    const LayerMaterials layer_laws(layers, materials);
     layers.check_thickness_positive(mesh.patch_length_x, mesh.patch_length_y);
+    check_formulation(layer_laws);
+    check_microstructure();
+    if (run.scene == SceneKind::indentation)
+      check_punch_fits();
+    if (run.scene == SceneKind::identification)
+      check_identification(layer_laws);
+    check_model_size(*this);
+  }
+
+
+  void
+  Parameters::check_formulation(const LayerMaterials &layer_laws) const
+  {
+    const bool nonlinear = layer_laws.any_finite_strain();
     AssertThrow(mesh.layout != MeshLayout::o_grid ||
                   mesh.o_grid_outer_boundary != OuterBoundary::circle ||
                   elasticity.sides != SideCondition::roller,
@@ -224,20 +242,20 @@ namespace ssc
                            "displacement of the four sides of a rectangular "
                            "patch; with Mesh/O-grid/Outer boundary = circle "
                            "use Sides = fixed or free."));
-    AssertThrow(!embedded.ligament_tension_only || layers.nonlinear(),
+    AssertThrow(!embedded.ligament_tension_only || nonlinear,
                 ExcMessage("Embedded/Ligaments/Tension only needs Newton's "
                            "method: give at least one layer a nonlinear "
-                           "Material model (corotational or neo-Hookean)."));
-    AssertThrow(embedded.ligament_contraction == 0 || layers.nonlinear(),
+                           "Material model (a finite-strain law)."));
+    AssertThrow(embedded.ligament_contraction == 0 || nonlinear,
                 ExcMessage("Embedded/Ligaments/Contraction needs finite "
                            "strain: give the layers a nonlinear Material "
-                           "model (corotational or neo-Hookean)."));
-    AssertThrow(!embedded.septum_tension_field || layers.nonlinear(),
+                           "model (a finite-strain law)."));
+    AssertThrow(!embedded.septum_tension_field || nonlinear,
                 ExcMessage("Embedded/Septa/Tension field needs Newton's "
                            "method: give at least one layer a nonlinear "
-                           "Material model (corotational or neo-Hookean)."));
+                           "Material model (a finite-strain law)."));
     AssertThrow(elasticity.volumetric_stabilisation == 0 ||
-                  (layers.nonlinear() && elasticity.n_pressure_modes() > 0 &&
+                  (nonlinear && elasticity.n_pressure_modes() > 0 &&
                    elasticity.formulation != Formulation::enhanced),
                 ExcMessage("Elasticity/Volumetric stabilisation acts on the "
                            "projected dilatation of finite-strain layers: it "
@@ -245,12 +263,12 @@ namespace ssc
                            "a nonlinear Material model."));
     if (elasticity.formulation == Formulation::enhanced)
       for (unsigned int l = 0; l < layers.n_layers(); ++l)
-        AssertThrow(layers.layer(l).model == MaterialModel::linear,
+        AssertThrow(layer_laws[l].kinematics() == Kinematics::small_strain,
                     ExcMessage("Elasticity/Formulation = enhanced is for the "
                                "linear material model only, but Layer "
                                "stack/" +
                                layers.layer(l).name + "/Material model = " +
-                               to_string(layers.layer(l).model) +
+                               layers.layer(l).material_model +
                                ": use mixed or mean dilatation with "
                                "finite-strain layers."));
     if (mesh.symmetry == MeshSymmetry::quarter)
@@ -265,15 +283,21 @@ namespace ssc
                              "the box layout, "
                              "without Microstructure/Lobules or Ligaments "
                              "and without Punch/Edge contact."));
-    AssertThrow(punch.contact != PunchContact::friction || layers.nonlinear(),
+    AssertThrow(punch.contact != PunchContact::friction || nonlinear,
                 ExcMessage("Punch/Contact = friction is nonlinear: it needs "
                            "Newton's method, so give at least one layer a "
-                           "nonlinear Material model (corotational or "
-                           "neo-Hookean)."));
-    AssertThrow(!punch.edge_contact || layers.nonlinear(),
+                           "nonlinear Material model (a finite-strain "
+                           "law)."));
+    AssertThrow(!punch.edge_contact || nonlinear,
                 ExcMessage("Punch/Edge contact needs Newton's method: give "
                            "at least one layer a nonlinear Material model "
-                           "(corotational or neo-Hookean)."));
+                           "(a finite-strain law)."));
+  }
+
+
+  void
+  Parameters::check_microstructure() const
+  {
     if (microstructure.lobules || microstructure.ligaments)
       {
         // throws unless the region overlaps the patch
@@ -298,74 +322,77 @@ namespace ssc
     if (run.scene == SceneKind::growth)
       for (const std::string &name : growth.layers)
         layers.index_of(name, "Growth/Layers"); // throws if unknown
-    if (run.scene == SceneKind::indentation)
+  }
+
+
+  void
+  Parameters::check_punch_fits() const
+  {
+    const double smallest = std::min(mesh.patch_length_x, mesh.patch_length_y);
+    std::ostringstream msg;
+    if (punch.shape == PunchShape::circle)
       {
-        const double smallest =
-          std::min(mesh.patch_length_x, mesh.patch_length_y);
-        std::ostringstream msg;
-        if (punch.shape == PunchShape::circle)
-          {
-            msg << "Punch/Radius = " << punch.radius
-                << " mm: the punch (diameter " << 2 * punch.radius
-                << " mm) does not fit in the patch (" << mesh.patch_length_x
-                << " x " << mesh.patch_length_y
-                << " mm). Enlarge Mesh/Patch length x and y or shrink the "
-                   "punch.";
-            AssertThrow(2 * punch.radius < smallest, ExcMessage(msg.str()));
-          }
-        else
-          {
-            // a face as large as the patch is allowed: confined compression
-            msg << "Punch/Length x Width = " << punch.length << " x "
-                << punch.width << " mm does not fit in the patch ("
-                << mesh.patch_length_x << " x " << mesh.patch_length_y
-                << " mm). Enlarge Mesh/Patch length x and y or shrink the "
-                   "punch.";
-            AssertThrow(punch.length <= mesh.patch_length_x * (1. + 1e-12) &&
-                          punch.width <= mesh.patch_length_y * (1. + 1e-12),
-                        ExcMessage(msg.str()));
-            AssertThrow(mesh.layout == MeshLayout::box,
-                        ExcMessage("Punch/Shape = rectangle needs Mesh/Layout "
-                                   "= box (the o-grid follows a circle)."));
-          }
-        const double stack = layers.depth_of_interface(layers.n_layers(), 0, 0);
-        std::ostringstream depth;
-        depth << "Punch/Depth = " << punch.depth
-              << " mm reaches through the whole layer stack (" << stack
-              << " mm at the patch centre): the punch must stay inside the "
-                 "body.";
-        AssertThrow(punch.control == PunchControl::force || punch.depth < stack,
-                    ExcMessage(depth.str()));
+        msg << "Punch/Radius = " << punch.radius << " mm: the punch (diameter "
+            << 2 * punch.radius << " mm) does not fit in the patch ("
+            << mesh.patch_length_x << " x " << mesh.patch_length_y
+            << " mm). Enlarge Mesh/Patch length x and y or shrink the "
+               "punch.";
+        AssertThrow(2 * punch.radius < smallest, ExcMessage(msg.str()));
       }
-    if (run.scene == SceneKind::identification)
+    else
       {
-        AssertThrow(!identification.data_file.empty(),
-                    ExcMessage("Run/Scene = identification needs "
-                               "Identification/Data file (the in vivo "
-                               "trials, e.g. data/multis/"
-                               "indentation_trials.csv)."));
-        // the forward model is the trial's skin, fat and muscle, linear:
-        // one solve per trial and moduli, homogeneous of degree one in them
-        AssertThrow(layers.n_layers() == 3,
-                    ExcMessage("Run/Scene = identification: the Layer stack "
-                               "must list exactly three layers, skin, fat "
-                               "and muscle from the top (the data's), not " +
-                               std::to_string(layers.n_layers()) + "."));
-        for (unsigned int l = 0; l < 3; ++l)
-          AssertThrow(layers.layer(l).model == MaterialModel::linear,
-                      ExcMessage("Run/Scene = identification fits the moduli "
-                                 "of a linear model (one solve per trial "
-                                 "and moduli): set Layer stack/" +
-                                 layers.layer(l).name +
-                                 "/Material model = linear."));
-        AssertThrow(punch.shape == PunchShape::rectangle &&
-                      punch.control == PunchControl::force,
-                    ExcMessage("Run/Scene = identification presses the "
-                               "trial's flat probe with its force: set "
-                               "Punch/Shape = rectangle and Punch/Control = "
-                               "force."));
+        // a face as large as the patch is allowed: confined compression
+        msg << "Punch/Length x Width = " << punch.length << " x " << punch.width
+            << " mm does not fit in the patch (" << mesh.patch_length_x << " x "
+            << mesh.patch_length_y
+            << " mm). Enlarge Mesh/Patch length x and y or shrink the "
+               "punch.";
+        AssertThrow(punch.length <= mesh.patch_length_x * (1. + 1e-12) &&
+                      punch.width <= mesh.patch_length_y * (1. + 1e-12),
+                    ExcMessage(msg.str()));
+        AssertThrow(mesh.layout == MeshLayout::box,
+                    ExcMessage("Punch/Shape = rectangle needs Mesh/Layout "
+                               "= box (the o-grid follows a circle)."));
       }
-    check_model_size(*this);
+    const double stack = layers.depth_of_interface(layers.n_layers(), 0, 0);
+    std::ostringstream depth;
+    depth << "Punch/Depth = " << punch.depth
+          << " mm reaches through the whole layer stack (" << stack
+          << " mm at the patch centre): the punch must stay inside the "
+             "body.";
+    AssertThrow(punch.control == PunchControl::force || punch.depth < stack,
+                ExcMessage(depth.str()));
+  }
+
+
+  void
+  Parameters::check_identification(const LayerMaterials &layer_laws) const
+  {
+    AssertThrow(!identification.data_file.empty(),
+                ExcMessage("Run/Scene = identification needs "
+                           "Identification/Data file (the in vivo "
+                           "trials, e.g. data/multis/"
+                           "indentation_trials.csv)."));
+    // the forward model is the trial's skin, fat and muscle, linear:
+    // one solve per trial and moduli, homogeneous of degree one in them
+    AssertThrow(layers.n_layers() == 3,
+                ExcMessage("Run/Scene = identification: the Layer stack "
+                           "must list exactly three layers, skin, fat "
+                           "and muscle from the top (the data's), not " +
+                           std::to_string(layers.n_layers()) + "."));
+    for (unsigned int l = 0; l < 3; ++l)
+      AssertThrow(layer_laws[l].kinematics() == Kinematics::small_strain,
+                  ExcMessage("Run/Scene = identification fits the moduli "
+                             "of a linear model (one solve per trial "
+                             "and moduli): set Layer stack/" +
+                             layers.layer(l).name +
+                             "/Material model = linear."));
+    AssertThrow(punch.shape == PunchShape::rectangle &&
+                  punch.control == PunchControl::force,
+                ExcMessage("Run/Scene = identification presses the "
+                           "trial's flat probe with its force: set "
+                           "Punch/Shape = rectangle and Punch/Control = "
+                           "force."));
   }
 
 

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include <ssc/identification/identification_parameters.h>
-#include <ssc/identification/indentation_trials.h>
+#include <ssc/scenes/identification_parameters.h>
 
 namespace ssc
 {

@@ -1,5 +1,5 @@
-#ifndef ssc_mechanics_rigid_punch_contact_h
-#define ssc_mechanics_rigid_punch_contact_h
+#ifndef ssc_contact_rigid_punch_contact_h
+#define ssc_contact_rigid_punch_contact_h
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <vector>
 
-#include <ssc/mechanics/cholesky_preconditioner.h>
-#include <ssc/mechanics/factor_operator.h>
+#include <ssc/linear_algebra/cholesky_preconditioner.h>
+#include <ssc/linear_algebra/factor_operator.h>
 
 namespace ssc
 {

@@ -1,5 +1,5 @@
-#ifndef ssc_mechanics_ldlt_preconditioner_h
-#define ssc_mechanics_ldlt_preconditioner_h
+#ifndef ssc_linear_algebra_ldlt_preconditioner_h
+#define ssc_linear_algebra_ldlt_preconditioner_h
 
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>

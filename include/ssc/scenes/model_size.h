@@ -1,7 +1,7 @@
-#ifndef ssc_model_size_h
-#define ssc_model_size_h
+#ifndef ssc_scenes_model_size_h
+#define ssc_scenes_model_size_h
 
-#include <ssc/parameters.h>
+#include <ssc/scenes/parameters.h>
 
 namespace ssc
 {

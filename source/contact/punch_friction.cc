@@ -9,7 +9,7 @@
 #include <cmath>
 #include <map>
 
-#include <ssc/mechanics/punch_friction.h>
+#include <ssc/contact/punch_friction.h>
 
 namespace ssc
 {

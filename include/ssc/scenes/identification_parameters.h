@@ -1,5 +1,5 @@
-#ifndef ssc_identification_identification_parameters_h
-#define ssc_identification_identification_parameters_h
+#ifndef ssc_scenes_identification_parameters_h
+#define ssc_scenes_identification_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -10,6 +10,11 @@
 namespace ssc
 {
   using namespace dealii;
+
+  /// The layers of a trial, from the top, as the data and the
+  /// identification name them.
+  inline constexpr std::array<const char *, 3> trial_layer_names{
+    {"skin", "fat", "muscle"}};
 
   /**
    * Section "Identification": which in vivo trials the layer moduli are

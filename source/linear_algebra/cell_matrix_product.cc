@@ -1,4 +1,4 @@
-#include <ssc/mechanics/cell_matrix_product.h>
+#include <ssc/linear_algebra/cell_matrix_product.h>
 
 namespace ssc
 {

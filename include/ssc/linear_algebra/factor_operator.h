@@ -1,5 +1,5 @@
-#ifndef ssc_mechanics_factor_operator_h
-#define ssc_mechanics_factor_operator_h
+#ifndef ssc_linear_algebra_factor_operator_h
+#define ssc_linear_algebra_factor_operator_h
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include <ssc/mechanics/cholesky_preconditioner.h>
+#include <ssc/linear_algebra/cholesky_preconditioner.h>
 
 namespace ssc
 {

@@ -1,5 +1,5 @@
-#ifndef ssc_parameters_h
-#define ssc_parameters_h
+#ifndef ssc_scenes_parameters_h
+#define ssc_scenes_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include <ssc/base/resource_limits.h>
-#include <ssc/identification/identification_parameters.h>
+#include <ssc/materials/layer_materials.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/embedded_parameters.h>
 #include <ssc/mesh/layer_stack.h>
@@ -15,6 +15,7 @@
 #include <ssc/microstructure/microstructure_parameters.h>
 #include <ssc/nonlinear/newton_parameters.h>
 #include <ssc/scenes/growth_parameters.h>
+#include <ssc/scenes/identification_parameters.h>
 #include <ssc/scenes/punch_parameters.h>
 #include <ssc/scenes/run_parameters.h>
 
@@ -75,8 +76,10 @@ namespace ssc
     void
     print_used(std::ostream &out) const;
 
-    RunParameters            run;
-    LayerStack               layers;
+    RunParameters run;
+    LayerStack    layers;
+    /// The parameters each law owns, per layer (Layer stack/<layer>/<law>).
+    LayerLawParameters       materials;
     MeshParameters           mesh;
     ElasticityParameters     elasticity;
     PunchParameters          punch;
@@ -117,6 +120,23 @@ namespace ssc
     /// would reject.
     void
     check_consistency() const;
+
+    /// The formulation, supports and contact options that need a
+    /// finite-strain law or a particular mesh.
+    void
+    check_formulation(const LayerMaterials &layer_laws) const;
+
+    /// Lobules, ligaments and growth against the layers and the patch.
+    void
+    check_microstructure() const;
+
+    /// The punch inside the patch and the body (indentation).
+    void
+    check_punch_fits() const;
+
+    /// What the identification's forward model needs.
+    void
+    check_identification(const LayerMaterials &layer_laws) const;
 
     ParameterHandler         prm;
     std::string              parameter_file;
