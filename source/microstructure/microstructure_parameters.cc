@@ -78,6 +78,17 @@ namespace ssc
   MicrostructureParameters::add_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Microstructure");
+    add_lobule_parameters(prm);
+    add_ligament_parameters(prm);
+    add_region_parameters(prm);
+    add_fasciotomy_parameters(prm);
+    prm.leave_subsection();
+  }
+
+
+  void
+  MicrostructureParameters::add_lobule_parameters(ParameterHandler &prm)
+  {
     prm.add_parameter(
       "Lobules",
       lobules,
@@ -115,6 +126,12 @@ namespace ssc
                       "mechanics integrates them exactly along the "
                       "background cells.",
                       Patterns::Double(0));
+  }
+
+
+  void
+  MicrostructureParameters::add_ligament_parameters(ParameterHandler &prm)
+  {
     prm.enter_subsection("Ligaments");
     prm.add_parameter("Enabled",
                       ligaments,
@@ -156,6 +173,12 @@ namespace ssc
                       "angles from the vertical.",
                       Patterns::Double(0, 90));
     prm.leave_subsection();
+  }
+
+
+  void
+  MicrostructureParameters::add_region_parameters(ParameterHandler &prm)
+  {
     prm.enter_subsection("Region of interest");
     prm.add_parameter("Shape",
                       region.shape,
@@ -195,6 +218,12 @@ namespace ssc
       "region-of-interest study); it must hold the region.",
       Patterns::Double(0));
     prm.leave_subsection();
+  }
+
+
+  void
+  MicrostructureParameters::add_fasciotomy_parameters(ParameterHandler &prm)
+  {
     prm.enter_subsection("Fasciotomy");
     prm.add_parameter("Enabled",
                       fasciotomy.enabled,
@@ -215,7 +244,6 @@ namespace ssc
                       fasciotomy.radius,
                       "Radius of the released cylinder, mm.",
                       Patterns::Double(0));
-    prm.leave_subsection();
     prm.leave_subsection();
   }
 

@@ -130,6 +130,23 @@ namespace ssc
     /// Checks the values (after parsing); throws naming the parameter.
     void
     check() const;
+
+  private:
+    /// Declares the lobule tessellation and its septa.
+    void
+    add_lobule_parameters(ParameterHandler &prm);
+
+    /// Declares subsection "Ligaments" (the skin ligaments).
+    void
+    add_ligament_parameters(ParameterHandler &prm);
+
+    /// Declares subsection "Region of interest" (where it is built).
+    void
+    add_region_parameters(ParameterHandler &prm);
+
+    /// Declares subsection "Fasciotomy" (a surgical release).
+    void
+    add_fasciotomy_parameters(ParameterHandler &prm);
   };
 } // namespace ssc
 
