@@ -334,4 +334,11 @@ namespace ssc
     return Utilities::MPI::max(
       largest, field.dof_handler().get_triangulation().get_communicator());
   }
+  void
+  BoundaryConstraints::apply(DisplacementField &target) const
+  {
+    TrilinosWrappers::MPI::Vector owned = target.owned_solution();
+    prescribed_constraints.distribute(owned);
+    target.set_solution(owned);
+  }
 } // namespace ssc

@@ -188,7 +188,7 @@ namespace ssc
   {
     if (by_force)
       {
-        system.apply_constraints();
+        system.constraints().apply(system.field());
         system.loads().nodal_forces = {
           {system.constraints().master_dof(0), -load / symmetry_factor}};
       }

@@ -98,6 +98,11 @@ namespace ssc
     void
     set_dirichlet_scale(const double factor);
 
+    /// Sets the constrained entries of @p field's solution: prescribed
+    /// values (at the current Dirichlet scale), hanging nodes and ties.
+    void
+    apply(DisplacementField &field) const;
+
     const AffineConstraints<double> &
     prescribed() const
     {
