@@ -15,8 +15,8 @@ namespace ssc
 {
   using namespace dealii;
 
-  /// Where the explicit microstructure is built (DESIGN.md §5: model only
-  /// what a scene needs); outside it the layers are homogeneous.
+  /// Where the explicit microstructure is built (docs/architecture.md §9: model
+  /// only what a scene needs); outside it the layers are homogeneous.
   enum class RegionShape
   {
     everywhere,
