@@ -150,7 +150,7 @@ namespace ssc
       depth_uncertainty,
       "The discretisation error (mm) of the depth at each of the Forces, "
       "as a convergence study of this scene's mesh and elements measured "
-      "it (benchmarks/forearm_finite_strain.py for the forearm): written "
+      "it (benchmarks/forearm/forearm_finite_strain.py for the forearm): written "
       "beside the depths as depth_uncertainty_mm in summary.json and drawn "
       "as error bars. Empty: not known (nothing is written). It belongs to "
       "the parameter set it was measured for: the study says when it has "

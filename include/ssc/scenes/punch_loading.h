@@ -6,9 +6,9 @@
 
 #include <memory>
 
-#include <ssc/mechanics/elastic_system.h>
 #include <ssc/contact/punch_friction.h>
 #include <ssc/contact/rigid_punch_contact.h>
+#include <ssc/mechanics/elastic_system.h>
 #include <ssc/scenes/parameters.h>
 
 namespace ssc

@@ -87,8 +87,8 @@ namespace ssc
     nlohmann::ordered_json
     to_json() const;
 
-    /// The summary.json entry `surface` of docs/architecture.md §7: Sa_mm, Sq_mm,
-    /// Sp_mm, Sv_mm, Sz_mm (ISO 25178, Sp + Sv), Spm_mm, Svm_mm and the
+    /// The summary.json entry `surface` of docs/architecture.md §7: Sa_mm,
+    /// Sq_mm, Sp_mm, Sv_mm, Sz_mm (ISO 25178, Sp + Sv), Spm_mm, Svm_mm and the
     /// dimples.
     nlohmann::ordered_json
     surface_json() const;
