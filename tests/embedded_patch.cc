@@ -124,7 +124,10 @@ namespace
     double
     force_x(const Triangulation<dim, 3> &embedded)
     {
-      ssc::ElasticSystem elasticity_here(mesh, stack, parameters(), timer);
+      ssc::ElasticSystem elasticity_here(mesh,
+                                         ssc::LayerMaterials(stack, {}),
+                                         parameters(),
+                                         timer);
       elasticity_here.field().distribute_dofs();
       double     covered;
       const auto quadrature =
@@ -153,7 +156,7 @@ namespace
                              {ssc::BoundaryId::x_max, xy, pull, {}},
                              {ssc::BoundaryId::y_min, y, zero, {}},
                              {ssc::BoundaryId::bottom, z, zero, {}}});
-      elasticity_here.solve_linear();
+      solve_linear(elasticity_here);
       return elasticity_here.reaction(1)[0];
     }
 
