@@ -81,7 +81,7 @@ main(int argc, char **argv)
                 "no")
           << std::endl;
 
-  elasticity.solve_linear();
+  solve_linear(elasticity);
 
   const std::vector<Tensor<1, 3>> directions = {Tensor<1, 3>({1, 0, 0}),
                                                 Tensor<1, 3>({0, 1, 0}),

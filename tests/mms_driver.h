@@ -57,7 +57,7 @@ namespace ssc_test
           conditions.push_back({id, ComponentMask(3, true), exact_ptr, {}});
         elasticity.setup(conditions);
         elasticity.loads().body_force = &force;
-        elasticity.solve_linear();
+        solve_linear(elasticity);
         const auto [l2, h1] = elasticity.field().errors(exact);
 
         std::ostringstream line;

@@ -117,7 +117,7 @@ main(int argc, char **argv)
                                  return growth;
                                });
       if (model == std::string("linear"))
-        system.solve_linear();
+        solve_linear(system);
       else
         {
           ssc::NewtonParameters newton;

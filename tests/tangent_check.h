@@ -27,7 +27,7 @@ tangent_error(ssc::ElasticSystem                          &elasticity,
   using namespace dealii;
   elasticity.field().set_solution(u);
   elasticity.assemble(true);
-  const auto &K             = elasticity.linearised().tangent;
+  const auto &K             = elasticity.tangent_system().linearised().tangent;
   double      largest_error = 0, largest_entry = 0;
   for (unsigned int j = 0; j < u.size(); j += stride)
     {
@@ -38,10 +38,12 @@ tangent_error(ssc::ElasticSystem                          &elasticity,
       minus.compress(VectorOperation::add);
       elasticity.field().set_solution(plus);
       elasticity.assemble(false);
-      TrilinosWrappers::MPI::Vector r_plus(elasticity.linearised().rhs);
+      TrilinosWrappers::MPI::Vector r_plus(
+        elasticity.tangent_system().linearised().rhs);
       elasticity.field().set_solution(minus);
       elasticity.assemble(false);
-      TrilinosWrappers::MPI::Vector r_minus(elasticity.linearised().rhs);
+      TrilinosWrappers::MPI::Vector r_minus(
+        elasticity.tangent_system().linearised().rhs);
       for (unsigned int i = 0; i < u.size(); ++i)
         {
           // system_rhs = -r, so dr/du_j = -(rhs+ - rhs-) / 2h

@@ -28,10 +28,7 @@ namespace ssc
     , growth_field(QGauss<3>(parameters.degree + 1))
     , kernel(layer_materials, parameters, growth_field)
     , assembler(displacement, kernel)
-    , linear_solver(parameters.linear_solver,
-                    displacement,
-                    boundary_constraints,
-                    progress)
+    , tangent(parameters, displacement, boundary_constraints, timer, progress)
   {}
 
 
@@ -115,16 +112,7 @@ namespace ssc
                                       communicator));
     assembler.add_couplings(boundary_constraints.prescribed(), sparsity);
     sparsity.compress();
-    linearisation.tangent.reinit(sparsity);
-    if (parameters.linear_solver.method == LinearSolverMethod::block)
-      {
-        pressure_system =
-          std::make_unique<PressureSystem>(displacement.dof_handler(),
-                                           parameters.n_pressure_modes());
-        pressure_system->setup(sparsity, boundary_constraints.prescribed());
-      }
-    linearisation.rhs.reinit(owned, communicator);
-    linearisation.update.reinit(owned, communicator);
+    tangent.setup(sparsity);
   }
 
 
@@ -132,6 +120,7 @@ namespace ssc
   ElasticSystem::assemble(const bool with_tangent)
   {
     TimerOutput::Scope               t(timer, "assembly");
+    LinearisedSystem                &linearisation = tangent.linearised();
     const AffineConstraints<double> &constraints =
       with_tangent ? boundary_constraints.update_from(displacement.solution()) :
                      boundary_constraints.homogeneous();
@@ -141,7 +130,7 @@ namespace ssc
                          external_loads.body_force,
                          with_tangent ? &linearisation.tangent : nullptr,
                          linearisation.rhs,
-                         pressure_system.get());
+                         tangent.pressure_system());
     for (const auto &[dof, force] : external_loads.nodal_forces)
       if (displacement.locally_owned_dofs().is_element(dof))
         linearisation.rhs[dof] += force;
@@ -149,71 +138,6 @@ namespace ssc
     if (inverted > 0)
       return std::numeric_limits<double>::infinity();
     return linearisation.rhs.l2_norm();
-  }
-
-
-  LinearSolveReport
-  ElasticSystem::solve_update(const SolveTarget &target)
-  {
-    TimerOutput::Scope t(timer, "solve");
-    linearisation.update = 0;
-    if (pressure_system)
-      return linear_solver.solve_saddle_point(linearisation.tangent,
-                                              *pressure_system,
-                                              linearisation.update,
-                                              linearisation.rhs,
-                                              boundary_constraints.increment(),
-                                              target);
-    return linear_solver.solve(linearisation.tangent,
-                               linearisation.update,
-                               linearisation.rhs,
-                               boundary_constraints.increment(),
-                               target);
-  }
-
-
-  TruncatedCGReport
-  ElasticSystem::solve_update_within(const double       radius,
-                                     const SolveTarget &target,
-                                     const bool         new_preconditioner)
-  {
-    TimerOutput::Scope t(timer, "solve");
-    return linear_solver.solve_within(linearisation.tangent,
-                                      linearisation.update,
-                                      linearisation.rhs,
-                                      boundary_constraints.increment(),
-                                      radius,
-                                      target,
-                                      new_preconditioner);
-  }
-
-
-  LinearSolveReport
-  ElasticSystem::solve_linear()
-  {
-    assemble(true);
-    const LinearSolveReport       report = solve_update(SolveTarget());
-    TrilinosWrappers::MPI::Vector u      = displacement.owned_solution();
-    u += linearisation.update;
-    displacement.set_solution(u);
-    return report;
-  }
-
-
-  void
-  ElasticSystem::shift_tangent(const double shift)
-  {
-    // read the diagonal before the first add leaves the matrix uncompressed
-    TrilinosWrappers::SparseMatrix  &K = linearisation.tangent;
-    const AffineConstraints<double> &constraints =
-      boundary_constraints.increment();
-    std::vector<std::pair<types::global_dof_index, double>> additions;
-    for (const types::global_dof_index row : displacement.locally_owned_dofs())
-      if (!constraints.is_constrained(row))
-        additions.emplace_back(row, shift * K.diag_element(row));
-    for (const auto &[row, value] : additions)
-      K.add(row, row, value);
-    K.compress(VectorOperation::add);
   }
 
 
@@ -244,5 +168,18 @@ namespace ssc
       [this](const types::global_dof_index dof) {
         return boundary_constraints.component(dof);
       });
+  }
+
+
+  LinearSolveReport
+  solve_linear(ElasticSystem &system)
+  {
+    system.assemble(true);
+    TangentSystem                &tangent = system.tangent_system();
+    const LinearSolveReport       report  = tangent.solve_update(SolveTarget());
+    TrilinosWrappers::MPI::Vector u       = system.field().owned_solution();
+    u += tangent.linearised().update;
+    system.field().set_solution(u);
+    return report;
   }
 } // namespace ssc

@@ -26,14 +26,14 @@ namespace ssc
   double
   ElasticProblem::rhs_norm() const
   {
-    return system.linearised().rhs.l2_norm();
+    return system.tangent_system().linearised().rhs.l2_norm();
   }
 
 
   LinearSolveReport
   ElasticProblem::solve_update(const SolveTarget &target)
   {
-    return system.solve_update(target);
+    return system.tangent_system().solve_update(target);
   }
 
 
@@ -42,21 +42,23 @@ namespace ssc
                                       const SolveTarget &target,
                                       const bool         new_tangent)
   {
-    return system.solve_update_within(radius, target, new_tangent);
+    return system.tangent_system().solve_update_within(radius,
+                                                       target,
+                                                       new_tangent);
   }
 
 
   void
   ElasticProblem::shift_tangent(const double shift)
   {
-    system.shift_tangent(shift);
+    system.tangent_system().shift_tangent(shift);
   }
 
 
   ElasticProblem::VectorType
   ElasticProblem::free_update() const
   {
-    VectorType du(system.linearised().update);
+    VectorType du(system.tangent_system().linearised().update);
     system.constraints().increment().set_zero(du);
     return du;
   }
@@ -69,7 +71,7 @@ namespace ssc
     // of the condensed tangent
     const VectorType du = free_update();
     VectorType       K_du(du);
-    system.linearised().tangent.vmult(K_du, du);
+    system.tangent_system().linearised().tangent.vmult(K_du, du);
     const double norm = du * du;
     return norm > 0 ? (du * K_du) / norm : 0.;
   }
@@ -79,7 +81,8 @@ namespace ssc
   ElasticProblem::slope_along_update() const
   {
     // the right-hand side is -r, with zeros on the constrained rows
-    return -(system.linearised().rhs * system.linearised().update);
+    return -(system.tangent_system().linearised().rhs *
+             system.tangent_system().linearised().update);
   }
 
 
@@ -94,7 +97,7 @@ namespace ssc
   ElasticProblem::set_state_from_stored(const double step)
   {
     VectorType u(stored_state);
-    u.add(step, system.linearised().update);
+    u.add(step, system.tangent_system().linearised().update);
     system.field().set_solution(u);
   }
 

@@ -38,7 +38,7 @@ namespace ssc
         // one solve for the unit load, every target by scaling
         Timer timer(communicator, true);
         apply_load(1.);
-        const LinearSolveReport report = system.solve_linear();
+        const LinearSolveReport report = solve_linear(system);
         double                  scale  = 1.;
         for (unsigned int k = 0; k < targets.size(); ++k)
           {
@@ -106,7 +106,7 @@ namespace ssc
                                             {"newton_iterations_per_step", newton},
                                             {"load_cuts_per_step", cuts},
                                             {"wall_time_per_step", times}};
-    const LinearSolver    &linear_solver = system.solver();
+    const LinearSolver    &linear_solver = system.tangent_system().solver();
     if (linear_solver.factorizations() > 0)
       solver["cholesky_factorizations"] = linear_solver.factorizations();
     if (linear_solver.indefinite_factorizations() > 0)

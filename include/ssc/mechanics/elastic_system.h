@@ -4,10 +4,8 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
 
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <memory>
 #include <utility>
 #include <vector>
 
@@ -17,9 +15,8 @@
 #include <ssc/mechanics/displacement_field.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/growth_field.h>
-#include <ssc/mechanics/linear_solver.h>
-#include <ssc/mechanics/pressure_system.h>
 #include <ssc/mechanics/system_assembler.h>
+#include <ssc/mechanics/tangent_system.h>
 #include <ssc/mechanics/volume_kernel.h>
 #include <ssc/mesh/background_mesh.h>
 
@@ -33,27 +30,15 @@ namespace ssc
     const Function<3> *body_force = nullptr;
   };
 
-  /// The last linearisation of an ElasticSystem.
-  struct LinearisedSystem
-  {
-    /// The tangent (with the constraints of the last assembly).
-    TrilinosWrappers::SparseMatrix tangent;
-    /// The right-hand side -r (zero on constrained rows).
-    TrilinosWrappers::MPI::Vector rhs;
-    /// The last update (locally owned entries).
-    TrilinosWrappers::MPI::Vector update;
-  };
-
-
   /**
    * The mechanical system of the layered volume: the displacement field,
-   * its constraints, the growth field, the layers' laws, the one assembly
-   * loop and the linear solver, wired together. It assembles the residual
+   * its constraints, the growth field, the layers' laws and their history,
+   * and the one assembly loop, wired together. It assembles the residual
    * r = f_int(u) - f_ext (as the right-hand side -r) and the tangent at the
-   * current displacement and solves for updates; Newton's method
-   * (nonlinear/) drives it through ElasticProblem, the linear problem is
-   * the single update of solve_linear(). Times its work as "assembly" and
-   * "solve".
+   * current displacement into its TangentSystem, which solves for updates;
+   * Newton's method (nonlinear/) drives the two through ElasticProblem, the
+   * linear problem is the single update of solve_linear(). Times its work
+   * as "assembly".
    */
   class ElasticSystem
   {
@@ -156,31 +141,6 @@ namespace ssc
     double
     assemble(const bool with_tangent);
 
-    /// Solves the assembled tangent system for the update (from zero).
-    LinearSolveReport
-    solve_update(const SolveTarget &target);
-
-    /// The update as a trust-region step within @p radius (see
-    /// LinearSolver::solve_within()); the prescribed displacements must have
-    /// been reached.
-    TruncatedCGReport
-    solve_update_within(const double       radius,
-                        const SolveTarget &target,
-                        const bool         new_preconditioner);
-
-    /// The linear problem (small strain): assembles at the current
-    /// solution, solves to the linear solver's tolerance and adds the
-    /// update, which is exact for a linear problem.
-    LinearSolveReport
-    solve_linear();
-
-    /// The linear solver, for its statistics (factorisations).
-    const LinearSolver &
-    solver() const
-    {
-      return linear_solver;
-    }
-
     /**
      * Reaction force (N) on the dofs held by condition @p condition (see
      * BoundaryConstraints::setup()): the residual of the cells and dof
@@ -192,17 +152,12 @@ namespace ssc
     Tensor<1, 3>
     reaction(const unsigned int condition);
 
-    /// The last assembled tangent, right-hand side and update.
-    const LinearisedSystem &
-    linearised() const
+    /// The assembled tangent system and its solvers.
+    TangentSystem &
+    tangent_system()
     {
-      return linearisation;
+      return tangent;
     }
-
-    /// Adds @p shift times its own diagonal to the tangent on the rows of
-    /// the free unknowns (Newton's globalisation).
-    void
-    shift_tangent(const double shift);
 
   private:
     const ElasticityParameters &parameters;
@@ -216,14 +171,18 @@ namespace ssc
     GrowthField         growth_field;
     VolumeKernel        kernel;
     SystemAssembler     assembler;
-    LinearSolver        linear_solver;
-    /// The displacement-pressure system (Linear solver/Method = block).
-    std::unique_ptr<PressureSystem> pressure_system;
-    Loads                           external_loads;
-    LinearisedSystem                linearisation;
+    TangentSystem       tangent;
+    Loads               external_loads;
     /// the attached dof contributions, told of converged increments
     std::vector<DofContribution *> dof_contributions;
   };
+
+
+  /// The linear problem (small strain): assembles @p system at its current
+  /// solution, solves to the linear solver's tolerance and adds the
+  /// update, which is exact for a linear problem.
+  LinearSolveReport
+  solve_linear(ElasticSystem &system);
 } // namespace ssc
 
 #endif
