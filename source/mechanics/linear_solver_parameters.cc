@@ -56,8 +56,10 @@ namespace ssc
     prm.add_parameter("Tolerance",
                       tolerance,
                       "CG stops when the residual has dropped by this factor "
-                      "relative to the right-hand side.",
-                      Patterns::Double(1e-16, 1));
+                      "relative to the right-hand side. At most 1e-3: a "
+                      "looser one stops CG before its iterate is an answer "
+                      "(at 1 it stops before the first iteration).",
+                      Patterns::Double(1e-16, 1e-3));
     prm.add_parameter("Max iterations",
                       max_iterations,
                       "CG iteration limit. Reaching it is an error, but "

@@ -151,6 +151,16 @@ namespace ssc
                SolverControl                        &control,
                const AffineConstraints<double>      &constraints);
 
+    /// After a solve that met its target: an error unless the true
+    /// residual of @p matrix @p x = @p rhs meets it too (to round-off), so
+    /// that no stopping test can pass off a wrong answer.
+    static void
+    check_true_residual(const TrilinosWrappers::SparseMatrix &matrix,
+                        const TrilinosWrappers::MPI::Vector  &x,
+                        const TrilinosWrappers::MPI::Vector  &rhs,
+                        const double                          tolerance,
+                        const unsigned int                    iterations);
+
     /// After a solve stopped by its iteration limit: an error unless its
     /// residual is still acceptable for @p target.
     static void
