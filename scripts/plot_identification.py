@@ -16,6 +16,8 @@ import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+
+import run_manifest  # noqa: E402 (scripts/)
 import matplotlib.ticker
 
 
@@ -70,7 +72,8 @@ def main():
               % (site, len(site_rows), 1e3 * E["skin"], 1e3 * E["fat"],
                  1e3 * E["muscle"]), "stiffness (N/mm)")
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "identification_stiffness.png"), dpi=120)
+    fig.savefig(run_manifest.record(folder, "identification_stiffness.png"),
+                dpi=120)
 
     # fat and muscle strains
     fig, axes = plt.subplots(2, len(sites), figsize=(3.6 * len(sites), 7.0),
@@ -84,7 +87,8 @@ def main():
                   "%s, %s strain at the largest force" % (site, layer),
                   layer + " strain")
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "identification_strains.png"), dpi=120)
+    fig.savefig(run_manifest.record(folder, "identification_strains.png"),
+                dpi=120)
 
 
 if __name__ == "__main__":

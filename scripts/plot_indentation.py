@@ -17,6 +17,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+import run_manifest  # noqa: E402 (scripts/)
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REFERENCE = os.path.join(ROOT, "prm", "reference",
                          "forearm_stiffness_flynn2011.csv")
@@ -70,7 +72,7 @@ def main():
                  (f", edge rounded at {edge} mm" if edge else ""),
                  fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(run, "force_depth.png"), dpi=110)
+    fig.savefig(run_manifest.record(run, "force_depth.png"), dpi=110)
 
     # surface profile
     profile = os.path.join(run, "surface_profile.csv")
@@ -89,7 +91,8 @@ def main():
         ax.legend(fontsize=7, ncol=2)
         ax.set_title("surface profile through the punch centre", fontsize=9)
         fig.tight_layout()
-        fig.savefig(os.path.join(run, "surface_profile.png"), dpi=110)
+        fig.savefig(run_manifest.record(run, "surface_profile.png"),
+                    dpi=110)
 
     # section y = 0, in the deformed configuration
     section = os.path.join(run, "section.csv")
@@ -144,7 +147,7 @@ def plot_section(run, summary, force, depth):
     ax[0].set_title(f"section y = 0 at {force:g} N, deformed (white: layer "
                     "interfaces, cyan: septa, red: punch)", fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(run, "section.png"), dpi=110)
+    fig.savefig(run_manifest.record(run, "section.png"), dpi=110)
 
 
 def punch_outline(summary, radius, depth):

@@ -20,6 +20,7 @@ import matplotlib.pyplot as plt
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection, Line3DCollection
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import run_manifest  # noqa: E402
 import vtu  # noqa: E402
 
 
@@ -104,7 +105,7 @@ def main():
     ax.set_title(f"{summary['run']}: septa (orange RCS, blue RCP), "
                  f"{summary.get('ligament_count', 0)} ligaments (black)\n"
                  f"{text}; central {args.window:g} mm shown", fontsize=9)
-    out = args.out or os.path.join(args.run, "microstructure.png")
+    out = args.out or run_manifest.record(args.run, "microstructure.png")
     fig.tight_layout()
     fig.savefig(out, dpi=args.dpi)
     print(out)

@@ -1,7 +1,8 @@
 # Runs ${SSC} on ${PRM} and checks that it exits with status 1, that its
 # message contains the text in ${EXPECT} and that this message is the first
-# thing on stderr (no banner or trace before it).
-execute_process(COMMAND ${SSC} ${PRM}
+# thing on stderr (no banner or trace before it). Each case runs under its
+# own Run/Name ${NAME}: two runs into one output folder are refused.
+execute_process(COMMAND ${SSC} ${PRM} -s "Run/Name=${NAME}"
   RESULT_VARIABLE _status OUTPUT_VARIABLE _out ERROR_VARIABLE _err
   TIMEOUT 60)
 file(READ ${EXPECT} _expected)

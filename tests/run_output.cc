@@ -1,8 +1,10 @@
 // Result files are written atomically: a write that fails (a full disk,
 // simulated by a stream that goes bad, and an unwritable target) throws an
 // error naming the file, leaves no temporary behind and keeps the earlier
-// content; a run removes the result files an earlier run left in its
-// folder (and only those); text files arrive whole.
+// content; a run removes the files an earlier run listed in the folder's
+// manifest (and their temporaries), never a user's file or one outside the
+// folder; a second run into a folder being written is refused; text files
+// arrive whole.
 
 #include <deal.II/base/exceptions.h>
 
@@ -54,24 +56,53 @@ main(int argc, char **argv)
   fs::remove_all(folder);
   fs::create_directories(folder);
 
-  // an earlier run's results, and a file of the user's
-  for (const std::string name : {"volume_0003.0.vtu",
-                                 "volume_0003.pvtu",
-                                 "volume.pvd",
-                                 "section.csv",
-                                 "summary.json",
-                                 "summary.json.tmp",
-                                 "parameters.prm",
-                                 "log.txt",
-                                 "notes.txt"})
-    std::ofstream(folder + "/" + name) << "old";
+  const auto state = [&](const std::string &name) {
+    return name + ": " + (fs::exists(folder + "/" + name) ? "kept" : "removed");
+  };
+
+  // files of the user's, in a folder no ssc run wrote into, are kept
+  for (const std::string name : {"precious.csv", "config.json", "notes.txt"})
+    std::ofstream(folder + "/" + name) << "mine";
+  {
+    ssc::RunOutput first(folder, MPI_COMM_WORLD, false);
+    dealii::deallog << "first run: removed " << first.n_removed_files()
+                    << ", kept " << first.n_kept_files() << std::endl;
+    first.write_text("summary.json", "{}");
+    first.write_text("section.csv", "x\n");
+  }
+  // the user adds a file; an interrupted write left a temporary
+  std::ofstream(folder + "/mine.csv") << "mine";
+  std::ofstream(folder + "/section.csv.tmp") << "half";
+  // a manifest edited to name a file outside the folder removes nothing
+  std::ofstream(folder + "_outside.txt") << "mine";
+  std::ofstream(folder + "/.ssc_manifest", std::ios::app)
+    << "../" << folder << "_outside.txt\n";
   {
     ssc::RunOutput output(folder, MPI_COMM_WORLD, false);
-    for (const std::string name :
-         {"volume_0003.0.vtu", "summary.json", "summary.json.tmp", "notes.txt"})
-      dealii::deallog << name << " after the start of a new run: "
-                      << (fs::exists(folder + "/" + name) ? "kept" : "removed")
-                      << std::endl;
+    dealii::deallog << "second run: removed " << output.n_removed_files()
+                    << ", kept " << output.n_kept_files() << std::endl;
+    for (const std::string name : {"summary.json",
+                                   "section.csv",
+                                   "section.csv.tmp",
+                                   "precious.csv",
+                                   "config.json",
+                                   "notes.txt",
+                                   "mine.csv"})
+      dealii::deallog << state(name) << std::endl;
+    dealii::deallog << "file outside the folder: "
+                    << (fs::exists(folder + "_outside.txt") ? "kept" :
+                                                              "removed")
+                    << std::endl;
+
+    // a second run into the folder while this one writes is refused
+    const std::string locked =
+      error_of([&]() { ssc::RunOutput(folder, MPI_COMM_WORLD, false); });
+    dealii::deallog << "concurrent run: "
+                    << (locked.find("Another ssc run is writing into the "
+                                    "output folder") == 0 ?
+                          "refused" :
+                          locked)
+                    << std::endl;
 
     output.write_text("table.csv", "a,b\n1,2\n");
     dealii::deallog << "table.csv: " << content(folder + "/table.csv").size()
@@ -113,5 +144,10 @@ main(int argc, char **argv)
                     << (occupied.find("Cannot write") == 0 ? "error" : occupied)
                     << std::endl;
   }
+  // the lock goes with the run that held it
+  dealii::deallog << "run after the end of the last: " << error_of([&]() {
+    ssc::RunOutput(folder, MPI_COMM_WORLD, false);
+  }) << std::endl;
   fs::remove_all(folder);
+  fs::remove(folder + "_outside.txt");
 }

@@ -2,6 +2,10 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.templates.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -15,6 +19,25 @@
 
 namespace ssc
 {
+  namespace
+  {
+    /// The list of the files ssc wrote into a run folder.
+    const std::string manifest_name = ".ssc_manifest";
+    /// The file whose lock a run holds while it writes into the folder.
+    const std::string lock_name = ".ssc_lock";
+
+    /// Whether @p name is a plain file name in the folder (a manifest
+    /// edited by hand cannot make ssc remove anything outside it).
+    bool
+    is_plain_name(const std::string &name)
+    {
+      return !name.empty() && name != "." && name != ".." &&
+             name.find('/') == std::string::npos && name != manifest_name &&
+             name != lock_name;
+    }
+  } // namespace
+
+
   /// Stream buffer writing to two buffers (stdout and the log file).
   class RunOutput::TeeBuffer : public std::streambuf
   {
@@ -65,11 +88,25 @@ namespace ssc
                   ExcMessage("Cannot create the output folder '" + folder +
                              "': " + error.message() +
                              " (Run/Output directory, Run/Name)."));
-      n_removed = remove_stale_results();
-      log_file.open(path("log.txt"));
-      AssertThrow(log_file,
-                  ExcMessage("Cannot write into the output folder '" + folder +
-                             "' (Run/Output directory, Run/Name)."));
+      lock_folder();
+      try
+        {
+          n_removed = remove_earlier_results();
+          n_kept    = count_other_files();
+          manifest.open(path(manifest_name), std::ios::trunc);
+          record("log.txt");
+          log_file.open(path("log.txt"));
+          AssertThrow(manifest && log_file,
+                      ExcMessage("Cannot write into the output folder '" +
+                                 folder +
+                                 "' (Run/Output directory, Run/Name)."));
+        }
+      catch (...)
+        {
+          ::close(lock_descriptor);
+          lock_descriptor = -1;
+          throw;
+        }
     });
     tee_buffer =
       std::make_unique<TeeBuffer>(print_to_stdout ? std::cout.rdbuf() : nullptr,
@@ -83,36 +120,83 @@ namespace ssc
   {
     if (tee_stream)
       tee_stream->flush();
+    if (lock_descriptor >= 0)
+      ::close(lock_descriptor);
+  }
+
+
+  void
+  RunOutput::lock_folder()
+  {
+    const std::string lock = path(lock_name);
+    lock_descriptor = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    AssertThrow(lock_descriptor >= 0,
+                ExcMessage("Cannot create '" + lock +
+                           "': " + std::strerror(errno) +
+                           " (Run/Output directory, Run/Name)."));
+    if (::flock(lock_descriptor, LOCK_EX | LOCK_NB) != 0)
+      {
+        ::close(lock_descriptor);
+        lock_descriptor = -1;
+        AssertThrow(false,
+                    ExcMessage("Another ssc run is writing into the output "
+                               "folder '" +
+                               folder + "' (it holds " + lock_name +
+                               "): wait until it ends, or give this run its "
+                               "own Run/Name or Run/Output directory."));
+      }
   }
 
 
   unsigned int
-  RunOutput::remove_stale_results() const
+  RunOutput::remove_earlier_results() const
   {
-    // what a run writes: its tables, fields, records, summary, log and the
-    // pictures the scripts draw, and temporaries of an interrupted run
-    const std::set<std::string> extensions = {
-      ".vtu", ".pvtu", ".pvd", ".csv", ".json", ".png", ".tmp"};
-    const std::set<std::string> names = {"parameters.prm", "log.txt"};
-    unsigned int                n     = 0;
-    for (const auto &entry : std::filesystem::directory_iterator(folder))
-      {
-        const std::filesystem::path &file = entry.path();
-        if (entry.is_regular_file() &&
-            (extensions.count(file.extension().string()) > 0 ||
-             names.count(file.filename().string()) > 0))
+    std::ifstream listed(path(manifest_name));
+    unsigned int  n = 0;
+    std::string   name;
+    while (std::getline(listed, name))
+      if (is_plain_name(name))
+        for (const std::string &file : {name, name + ".tmp"})
           {
-            std::error_code error;
-            std::filesystem::remove(file, error);
+            const std::filesystem::path target(path(file));
+            std::error_code             error;
+            if (!std::filesystem::is_regular_file(
+                  std::filesystem::symlink_status(target, error)))
+              continue;
+            std::filesystem::remove(target, error);
             AssertThrow(!error,
-                        ExcMessage("Cannot remove '" + file.string() +
+                        ExcMessage("Cannot remove '" + target.string() +
                                    "', a result of an earlier run in the "
                                    "output folder: " +
                                    error.message()));
             ++n;
           }
-      }
     return n;
+  }
+
+
+  unsigned int
+  RunOutput::count_other_files() const
+  {
+    unsigned int n = 0;
+    for (const auto &entry : std::filesystem::directory_iterator(folder))
+      if (is_plain_name(entry.path().filename().string()))
+        ++n;
+    return n;
+  }
+
+
+  void
+  RunOutput::record(const std::string &file_name) const
+  {
+    if (!recorded.insert(file_name).second)
+      return;
+    manifest << file_name << '\n' << std::flush;
+    AssertThrow(manifest,
+                ExcMessage("Cannot write '" + path(manifest_name) +
+                           "': " + std::strerror(errno) +
+                           " (the list of this run's files; Run/Output "
+                           "directory chooses where results go)."));
   }
 
 
@@ -209,7 +293,10 @@ namespace ssc
   RunOutput::write_file(const std::string                         &file_name,
                         const std::function<void(std::ostream &)> &write) const
   {
-    on_root([&]() { write_atomically(path(file_name), write); });
+    on_root([&]() {
+      record(file_name);
+      write_atomically(path(file_name), write);
+    });
   }
 
 
@@ -227,6 +314,10 @@ namespace ssc
              Utilities::int_to_string(rank, Utilities::needed_digits(n_ranks)) +
              ".vtu";
     };
+    on_root([&]() {
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        record(piece(r));
+    });
     const unsigned int rank =
       Utilities::MPI::this_mpi_process(mpi_communicator);
     run_collectively(

@@ -70,6 +70,11 @@ namespace ssc
       pcout() << "Removed " << run_output.n_removed_files()
               << " result files of an earlier run from "
               << run_output.directory() << "/" << std::endl;
+    if (run_output.n_kept_files() > 0 && !parameters.run.test_mode)
+      pcout() << "Kept " << run_output.n_kept_files() << " files in "
+              << run_output.directory()
+              << "/ that no ssc run recorded writing (.ssc_manifest)"
+              << std::endl;
   }
 
 

@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,8 +27,12 @@ namespace ssc
    * written under a temporary name, checked and renamed, so that a full
    * disk or a vanished folder gives an error naming the file instead of a
    * truncated result; summary.json comes last, so its presence means a
-   * complete run. Result files of an earlier run in the same folder are
-   * removed when the run starts (and said so). Every writing function is
+   * complete run. The folder's manifest (.ssc_manifest) lists every file a
+   * run wrote, before it writes it: the next run removes exactly those (and
+   * their temporaries) and keeps everything else, so that a user's file or
+   * the input of a run is never deleted. A lock (.ssc_lock, released by the
+   * system when the process ends, however it ends) keeps a second run out
+   * of a folder that a run is writing into. Every writing function is
    * collective: rank 0 writes (VTU pieces: every rank its own), and an
    * error on any rank is thrown on all. The record lists are members, not
    * statics, so several runs in one process do not leak into each other.
@@ -58,6 +63,14 @@ namespace ssc
     n_removed_files() const
     {
       return n_removed;
+    }
+
+    /// How many files in the folder no ssc run recorded writing; they are
+    /// kept (rank 0).
+    unsigned int
+    n_kept_files() const
+    {
+      return n_kept;
     }
 
     /// Full path of @p file_name in the run folder.
@@ -111,15 +124,34 @@ namespace ssc
     void
     on_root(const std::function<void()> &work) const;
 
-    /// Removes the result files an earlier run left in the folder (rank 0);
-    /// returns how many.
+    /// Takes the folder's lock, or throws if another run holds it (rank 0).
+    void
+    lock_folder();
+
+    /// Removes the files the manifest of an earlier run lists, and their
+    /// temporaries (rank 0); returns how many.
     unsigned int
-    remove_stale_results() const;
+    remove_earlier_results() const;
+
+    /// Counts the files in the folder that are not ssc's own (rank 0).
+    unsigned int
+    count_other_files() const;
+
+    /// Lists @p file_name in the manifest before it is written (rank 0).
+    void
+    record(const std::string &file_name) const;
 
     std::string  folder;
     MPI_Comm     mpi_communicator;
     bool         is_root;
     unsigned int n_removed = 0;
+    unsigned int n_kept    = 0;
+    /// The lock file's descriptor (rank 0), -1 if none is held.
+    int lock_descriptor = -1;
+    /// The manifest, open for appending, and the names it lists: they
+    /// record what was written, not the state of the results (mutable).
+    mutable std::ofstream         manifest;
+    mutable std::set<std::string> recorded;
 
     class TeeBuffer;
     std::ofstream                       log_file;
