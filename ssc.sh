@@ -75,6 +75,36 @@ uses_direct_factor() {
   return 1
 }
 
+# direct_factor_override [ssc options]: the Preconditioner a -s override
+# sets (lower case), or nothing; the last one wins, as in ssc
+direct_factor_override() {
+  local argument choice="" pattern='Preconditioner[[:space:]]*=[[:space:]]*([A-Za-z]+)'
+  for argument in "$@"; do
+    [[ "$argument" =~ $pattern ]] && choice="${BASH_REMATCH[1],,}"
+  done
+  echo "$choice"
+}
+
+# The variables that choose ranks and threads: a whole number or an error
+# naming the variable (deal.II aborts on a bad DEAL_II_NUM_THREADS before
+# ssc can say anything, mpirun starts any number of ranks).
+check_environment() {
+  if [ -n "${DEAL_II_NUM_THREADS+set}" ] &&
+     ! [[ "$DEAL_II_NUM_THREADS" =~ ^[1-9][0-9]*$ ]]; then
+    echo "ssc: error: DEAL_II_NUM_THREADS='$DEAL_II_NUM_THREADS' must be" \
+      "a whole number of threads, at least 1 (unset it to use every core)." >&2
+    exit 1
+  fi
+  if [ -n "${SSC_RANKS+set}" ] &&
+     { ! [[ "$SSC_RANKS" =~ ^[1-9][0-9]*$ ]] || [ "$SSC_RANKS" -gt "$(nproc)" ]; }; then
+    echo "ssc: error: SSC_RANKS='$SSC_RANKS' must be a whole number of MPI" \
+      "ranks from 1 to the $(nproc) cores of this machine (unset it for" \
+      "one per core)." >&2
+    exit 1
+  fi
+}
+check_environment
+
 # mpirun refuses root unless told; CI runs as root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
@@ -98,8 +128,12 @@ case "${1:-run}" in
     # one MPI rank per core unless SSC_RANKS says otherwise; a scene that
     # factorises its tangents (Preconditioner = cholesky) runs on one rank,
     # its cell loops on threads on the cores the ranks leave free
-    if [ -z "${SSC_RANKS:-}" ] && uses_direct_factor "$prm"; then
-      RANKS=1
+    if [ -z "${SSC_RANKS:-}" ]; then
+      override=$(direct_factor_override "$@")
+      if [ "$override" = cholesky ] ||
+         { [ -z "$override" ] && uses_direct_factor "$prm"; }; then
+        RANKS=1
+      fi
     fi
     if [ "$RANKS" -gt 1 ]; then
       mpirun -np "$RANKS" "$BUILD/bin/ssc" "$prm" "$@"
