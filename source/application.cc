@@ -155,6 +155,8 @@ namespace ssc
           parameters.read(file, overrides);
           if (check_only)
             {
+              if (parameters.run.scene == SceneKind::identification)
+                IdentificationScene::check_data(parameters);
               if (root)
                 out << file << ": parameters are valid" << std::endl;
               return 0;

@@ -180,6 +180,16 @@ main(int argc, char **argv)
           "    set Material model = neo-Hookean\n"
           "    subsection neo-Hookean\n"
           "      set Volumetric energy = cubic\n    end\n  end\nend\n");
+  check("contact penalty that ruins the tangent",
+        std::string(valid_stack) +
+          "subsection Punch\n  set Contact penalty = 1e30\nend\n");
+  check("friction penalty that ruins the tangent",
+        std::string(valid_stack) +
+          "subsection Punch\n  set Friction penalty = 1e30\nend\n");
+  check("linear solver tolerance that stops CG before an answer",
+        std::string(valid_stack) +
+          "subsection Elasticity\n  subsection Linear solver\n"
+          "    set Tolerance = 1\n  end\nend\n");
   const std::string growth = std::string(valid_stack) +
                              "subsection Run\n  set Scene = growth\n"
                              "  set Output directory = results\nend\n";
@@ -417,6 +427,26 @@ main(int argc, char **argv)
            "Identification/Data file=odd_probe.csv",
            "-s",
            "Identification/Sites=LA_A"});
+    // --check reads the data file and checks every site as a run would
+    // before its first fit
+    check("--check: identification data file missing",
+          identification,
+          {"-s", "Identification/Data file=no_such.csv", "--check"});
+    std::ofstream("garbage.csv") << "hello\nworld\n";
+    check("--check: identification data file that is not a table",
+          identification,
+          {"-s", "Identification/Data file=garbage.csv", "--check"});
+    std::ifstream small(SOURCE_DIR "/data/multis_small.csv");
+    std::getline(small, header);
+    std::getline(small, row);
+    std::ofstream("one_subject.csv") << header << '\n' << row << '\n';
+    check("--check: identification site with one subject",
+          identification,
+          {"-s",
+           "Identification/Data file=one_subject.csv",
+           "-s",
+           "Identification/Sites=LA_A",
+           "--check"});
   }
 
   check("missing include", "include no_such_region.prm\n");

@@ -11,6 +11,7 @@
 
 #include <boost/algorithm/string/trim.hpp>
 
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -148,4 +149,14 @@ main(int argc, char **argv)
                [] { ssc::read_indentation_trials("one_trial.csv", {"XX_A"}); });
   expect_error("missing file",
                [] { ssc::read_indentation_trials("does_not_exist.csv"); });
+  write_edited_copy("hexadecimal.csv", keep, [](std::string &row) {
+    replace_field(row, 9, "0x10");
+  });
+  expect_error("hexadecimal number",
+               [] { ssc::read_indentation_trials("hexadecimal.csv"); });
+  std::filesystem::create_directories("a_folder.csv");
+  expect_error("a folder",
+               [] { ssc::read_indentation_trials("a_folder.csv"); });
+  expect_error("an endless device",
+               [] { ssc::read_indentation_trials("/dev/zero"); });
 }

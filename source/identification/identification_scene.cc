@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <set>
 
 #include <ssc/base/round_robin.h>
 #include <ssc/identification/identification_record.h>
@@ -120,6 +121,55 @@ namespace ssc
         ProbeForwardModel::probe_face(trial);
       return data;
     }
+
+
+    /// @p site's @p trials split by subject; throws naming the site and
+    /// Training fraction if either part would be empty.
+    TrialSplit
+    split_site(const std::vector<IndentationTrial> &trials,
+               const IdentificationParameters      &id,
+               const std::string                   &site)
+    {
+      try
+        {
+          return split_by_subject(trials, id.training_fraction, id.split_seed);
+        }
+      catch (const ExceptionBase &)
+        {
+          // split_by_subject's own message names neither site nor parameter
+          std::set<std::string> subjects;
+          for (const IndentationTrial &trial : trials)
+            subjects.insert(trial.subject);
+          AssertThrow(false,
+                      ExcMessage(
+                        "Identification/Training fraction = " +
+                        std::to_string(id.training_fraction) +
+                        " leaves no training or no held-out subject among "
+                        "the " +
+                        std::to_string(subjects.size()) +
+                        " subject(s) with trials at site " + site +
+                        " (Identification/Sites, Data file): a site needs "
+                        "trials of at least two subjects."));
+        }
+      return {};
+    }
+
+
+    /// The trials of every site of @p data, each checked to split into
+    /// training and held-out subjects before the first fit starts.
+    std::vector<std::vector<IndentationTrial>>
+    trials_by_site(const IndentationData          &data,
+                   const IdentificationParameters &id,
+                   const std::string              &path)
+    {
+      std::vector<std::vector<IndentationTrial>> trials;
+      for (const std::string &site : id.sites)
+        {
+          trials.push_back(site_trials(data, site, path));
+          split_site(trials.back(), id, site);
+        }
+      return trials;
+    }
   } // namespace
 
 
@@ -168,14 +218,7 @@ namespace ssc
   {
     const IdentificationParameters &id = parameters.identification;
     SiteFit                         s;
-    s.split = split_by_subject(trials, id.training_fraction, id.split_seed);
-    AssertThrow(!s.split.training.empty() && !s.split.held_out.empty(),
-                ExcMessage(
-                  "Identification/Training fraction = " +
-                  std::to_string(id.training_fraction) + " leaves no " +
-                  (s.split.training.empty() ? "training" : "held-out") +
-                  " subject among the " + std::to_string(trials.size()) +
-                  " of " + site + "."));
+    s.split = split_site(trials, id, site);
     pcout << "Site " << site << ": " << s.split.training.size()
           << " training and " << s.split.held_out.size() << " held-out subjects"
           << std::endl;
@@ -230,16 +273,17 @@ namespace ssc
     SceneRun            scene(parameters, mpi_communicator, "identification");
     ConditionalOStream &pcout = scene.pcout();
 
-    const std::string       path = id.data_path(parameters.file());
-    const IndentationData   data = read_trials(id, path, pcout);
+    const std::string path = id.data_path(parameters.file());
+    const auto        trials_of_sites =
+      trials_by_site(read_trials(id, path, pcout), id, path);
     const ProbeForwardModel model(parameters, scene.timer());
     const LayerModuliFit    fitter(model, id, mpi_communicator);
     IdentificationRecord    record;
-    for (const std::string &site : id.sites)
+    for (unsigned int k = 0; k < id.sites.size(); ++k)
       {
-        Timer                               site_timer;
-        const std::vector<IndentationTrial> trials =
-          site_trials(data, site, path);
+        const std::string                   &site   = id.sites[k];
+        const std::vector<IndentationTrial> &trials = trials_of_sites[k];
+        Timer                                site_timer;
         const SiteFit s = fit_site(site, trials, fitter, pcout);
         record.add_site(site, s, id, pcout);
         // the size of the first trial's model, for the summary
@@ -262,5 +306,15 @@ namespace ssc
       }
     record.write(scene, id);
     scene.print_wall_times();
+  }
+
+
+  void
+  IdentificationScene::check_data(const Parameters &parameters)
+  {
+    const IdentificationParameters &id   = parameters.identification;
+    const std::string               path = id.data_path(parameters.file());
+    ConditionalOStream              quiet(std::cout, false);
+    trials_by_site(read_trials(id, path, quiet), id, path);
   }
 } // namespace ssc

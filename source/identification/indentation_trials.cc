@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -41,18 +42,48 @@ namespace ssc
     {
       std::size_t end   = 0;
       double      value = 0;
-      try
-        {
-          value = std::stod(field, &end);
-        }
-      catch (const std::exception &)
-        {
-          end = 0;
-        }
+      // decimal only: std::stod would read 0x10 as 16
+      if (field.find_first_not_of("0123456789+-.eE") == std::string::npos)
+        try
+          {
+            value = std::stod(field, &end);
+          }
+        catch (const std::exception &)
+          {
+            end = 0;
+          }
       AssertThrow(end == field.size() && end > 0 && std::isfinite(value),
                   ExcMessage(where + ": column " + column + " is '" + field +
                              "', not a number."));
       return value;
+    }
+
+    /// Throws unless @p filename is a readable table of a sensible size:
+    /// a folder or a device (/dev/zero) would be read as an empty or an
+    /// endless table.
+    void
+    check_data_file(const std::string &filename)
+    {
+      namespace fs                   = std::filesystem;
+      const std::uintmax_t  max_size = 64u << 20;
+      std::error_code       error;
+      const fs::file_status status = fs::status(filename, error);
+      const std::string data_file  = "The indentation data file '" + filename +
+                                    "' (Identification/Data file)";
+      AssertThrow(fs::exists(status),
+                  ExcMessage("Cannot open the indentation data file '" +
+                             filename + "'."));
+      AssertThrow(!fs::is_directory(status),
+                  ExcMessage(data_file + " is a folder, not a CSV file."));
+      AssertThrow(fs::is_regular_file(status),
+                  ExcMessage(data_file +
+                             " is not a regular file (a device or a pipe?)."));
+      const std::uintmax_t size = fs::file_size(filename, error);
+      AssertThrow(!error && size <= max_size,
+                  ExcMessage(data_file + " holds " + std::to_string(size) +
+                             " bytes, more than the " +
+                             std::to_string(max_size >> 20) +
+                             " MB a table of indentation trials needs."));
     }
   } // namespace
 
@@ -60,6 +91,7 @@ namespace ssc
   read_indentation_trials(const std::string              &filename,
                           const std::vector<std::string> &sites)
   {
+    check_data_file(filename);
     std::ifstream in(filename);
     AssertThrow(in,
                 ExcMessage("Cannot open the indentation data file '" +

@@ -115,8 +115,9 @@ namespace ssc
       "node's tangential spring is (factor) E / h times its share of the "
       "surface area, E the top layer's Young's modulus and h the face size, "
       "so a sticking node slips elastically about h/(factor) at a shear "
-      "traction E.",
-      Patterns::Double(0));
+      "traction E. At most 1e6: a stiffer spring slips less than h/1e6 but "
+      "leaves the tangent too ill-conditioned for a meaningful update.",
+      Patterns::Double(0, 1e6));
   }
 
 
@@ -212,8 +213,11 @@ namespace ssc
                       "pressure is (factor) E / h times the penetration, E "
                       "the top layer's Young's modulus and h the size of "
                       "the surface face, so the skin penetrates about "
-                      "h/(factor) at the contact pressure E.",
-                      Patterns::Double(0));
+                      "h/(factor) at the contact pressure E. At most 1e6: a "
+                      "stiffer penalty penetrates less than h/1e6 but leaves "
+                      "the tangent too ill-conditioned for a meaningful "
+                      "update.",
+                      Patterns::Double(0, 1e6));
   }
 
 

@@ -39,6 +39,12 @@ namespace ssc
     void
     run();
 
+    /// Reads Identification/Data file and checks every trial and site as
+    /// run() would before its first fit (ssc --check); throws naming the
+    /// file, line and column or the parameter to change.
+    static void
+    check_data(const Parameters &parameters);
+
   private:
     /// The fit's start for @p split: the springs in series fitted to the
     /// training strains, scaled to the median stiffness (printed).
