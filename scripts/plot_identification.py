@@ -16,9 +16,9 @@ import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+import matplotlib.ticker
 
 import run_manifest  # noqa: E402 (scripts/)
-import matplotlib.ticker
 
 
 def read_rows(path):
