@@ -7,7 +7,10 @@
 // - bad files, each giving one clear message naming the line or column:
 //   a row with a field too few, a value that is not a number, a negative
 //   thickness, a header without a column ssc needs, a site list that
-//   matches no trial, a file that does not exist.
+//   matches no trial, a file that does not exist, a hexadecimal number,
+//   thicknesses and strains outside a human range, a header with two
+//   columns of one name, an empty subject, a row given twice, a folder
+//   and a device as the file.
 
 #include <boost/algorithm/string/trim.hpp>
 
@@ -154,6 +157,37 @@ main(int argc, char **argv)
   });
   expect_error("hexadecimal number",
                [] { ssc::read_indentation_trials("hexadecimal.csv"); });
+  write_edited_copy("thin_skin.csv", keep, [](std::string &row) {
+    replace_field(row, 15, "1e-9");
+  });
+  expect_error("skin of 1e-9 mm",
+               [] { ssc::read_indentation_trials("thin_skin.csv"); });
+  write_edited_copy("thick_skin.csv", keep, [](std::string &row) {
+    replace_field(row, 15, "1e7");
+  });
+  expect_error("skin of 1e7 mm",
+               [] { ssc::read_indentation_trials("thick_skin.csv"); });
+  write_edited_copy("large_strain.csv", keep, [](std::string &row) {
+    replace_field(row, 12, "7.5");
+  });
+  expect_error("fat strain 7.5",
+               [] { ssc::read_indentation_trials("large_strain.csv"); });
+  write_edited_copy(
+    "two_fat_columns.csv",
+    [](std::string &header) { replace_field(header, 3, "Fat"); },
+    keep);
+  expect_error("two columns named Fat",
+               [] { ssc::read_indentation_trials("two_fat_columns.csv"); });
+  write_edited_copy("no_subject.csv", keep, [](std::string &row) {
+    replace_field(row, 1, "");
+  });
+  expect_error("empty subject",
+               [] { ssc::read_indentation_trials("no_subject.csv"); });
+  write_edited_copy("repeated_row.csv", keep, [](std::string &row) {
+    row += '\n' + row;
+  });
+  expect_error("a row twice",
+               [] { ssc::read_indentation_trials("repeated_row.csv"); });
   std::filesystem::create_directories("a_folder.csv");
   expect_error("a folder",
                [] { ssc::read_indentation_trials("a_folder.csv"); });

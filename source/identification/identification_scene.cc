@@ -6,6 +6,7 @@
 #include <iostream>
 #include <limits>
 #include <set>
+#include <sstream>
 
 #include <ssc/base/round_robin.h>
 #include <ssc/identification/identification_record.h>
@@ -118,7 +119,7 @@ namespace ssc
         }
       pcout << std::endl;
       for (const auto &trial : data.trials)
-        ProbeForwardModel::probe_face(trial);
+        ProbeForwardModel::check_trial(trial, id.patch_margin);
       return data;
     }
 
@@ -140,35 +141,43 @@ namespace ssc
           std::set<std::string> subjects;
           for (const IndentationTrial &trial : trials)
             subjects.insert(trial.subject);
-          AssertThrow(false,
-                      ExcMessage(
-                        "Identification/Training fraction = " +
-                        std::to_string(id.training_fraction) +
-                        " leaves no training or no held-out subject among "
-                        "the " +
-                        std::to_string(subjects.size()) +
-                        " subject(s) with trials at site " + site +
-                        " (Identification/Sites, Data file): a site needs "
-                        "trials of at least two subjects."));
+          std::ostringstream message;
+          message << "Identification/Training fraction = "
+                  << id.training_fraction
+                  << " leaves no training or no held-out subject among the "
+                  << subjects.size() << " subject(s) with trials at site "
+                  << site
+                  << " (Identification/Sites, Data file): a site needs "
+                     "trials of at least two subjects.";
+          AssertThrow(false, ExcMessage(message.str()));
         }
       return {};
     }
 
 
-    /// The trials of every site of @p data, each checked to split into
-    /// training and held-out subjects before the first fit starts.
-    std::vector<std::vector<IndentationTrial>>
+    /// One site's trials and their split by subject.
+    struct SiteTrials
+    {
+      std::vector<IndentationTrial> trials;
+      TrialSplit                    split;
+    };
+
+    /// The trials of every site of @p data, each split into training and
+    /// held-out subjects before the first fit starts.
+    std::vector<SiteTrials>
     trials_by_site(const IndentationData          &data,
                    const IdentificationParameters &id,
                    const std::string              &path)
     {
-      std::vector<std::vector<IndentationTrial>> trials;
+      std::vector<SiteTrials> sites;
       for (const std::string &site : id.sites)
         {
-          trials.push_back(site_trials(data, site, path));
-          split_site(trials.back(), id, site);
+          SiteTrials s;
+          s.trials = site_trials(data, site, path);
+          s.split  = split_site(s.trials, id, site);
+          sites.push_back(std::move(s));
         }
-      return trials;
+      return sites;
     }
   } // namespace
 
@@ -211,14 +220,14 @@ namespace ssc
 
 
   SiteFit
-  IdentificationScene::fit_site(const std::string                   &site,
-                                const std::vector<IndentationTrial> &trials,
-                                const LayerModuliFit                &fitter,
-                                ConditionalOStream &pcout) const
+  IdentificationScene::fit_site(const std::string    &site,
+                                const TrialSplit     &split,
+                                const LayerModuliFit &fitter,
+                                ConditionalOStream   &pcout) const
   {
     const IdentificationParameters &id = parameters.identification;
     SiteFit                         s;
-    s.split = split_site(trials, id, site);
+    s.split = split;
     pcout << "Site " << site << ": " << s.split.training.size()
           << " training and " << s.split.held_out.size() << " held-out subjects"
           << std::endl;
@@ -282,9 +291,10 @@ namespace ssc
     for (unsigned int k = 0; k < id.sites.size(); ++k)
       {
         const std::string                   &site   = id.sites[k];
-        const std::vector<IndentationTrial> &trials = trials_of_sites[k];
+        const std::vector<IndentationTrial> &trials = trials_of_sites[k].trials;
         Timer                                site_timer;
-        const SiteFit s = fit_site(site, trials, fitter, pcout);
+        const SiteFit                        s =
+          fit_site(site, trials_of_sites[k].split, fitter, pcout);
         record.add_site(site, s, id, pcout);
         // the size of the first trial's model, for the summary
         if (!record.has_model_size())

@@ -58,6 +58,15 @@ namespace ssc
       return value;
     }
 
+    /// @p value as a message writes it (six significant digits).
+    std::string
+    format_number(const double value)
+    {
+      std::ostringstream text;
+      text << value;
+      return text.str();
+    }
+
     /// Throws unless @p filename is a readable table of a sensible size:
     /// a folder or a device (/dev/zero) would be read as an empty or an
     /// endless table.
@@ -71,8 +80,7 @@ namespace ssc
       const std::string data_file  = "The indentation data file '" + filename +
                                     "' (Identification/Data file)";
       AssertThrow(fs::exists(status),
-                  ExcMessage("Cannot open the indentation data file '" +
-                             filename + "'."));
+                  ExcMessage(data_file + " does not exist."));
       AssertThrow(!fs::is_directory(status),
                   ExcMessage(data_file + " is a folder, not a CSV file."));
       AssertThrow(fs::is_regular_file(status),
@@ -94,8 +102,8 @@ namespace ssc
     check_data_file(filename);
     std::ifstream in(filename);
     AssertThrow(in,
-                ExcMessage("Cannot open the indentation data file '" +
-                           filename + "'."));
+                ExcMessage("The indentation data file '" + filename +
+                           "' cannot be read (permissions?)."));
     std::string header_line;
     AssertThrow(std::getline(in, header_line),
                 ExcMessage("The indentation data file '" + filename +
@@ -129,6 +137,15 @@ namespace ssc
                                "' (data/multis/README.md lists the columns "
                                "ssc reads)."));
         index = found - header.begin();
+        // a second column of the same name would be silently ignored
+        const auto again = std::find(found + 1, header.end(), name);
+        AssertThrow(again == header.end(),
+                    ExcMessage("The indentation data file '" + filename +
+                               "' has two columns named '" + name +
+                               "' (columns " + std::to_string(index + 1) +
+                               " and " +
+                               std::to_string(again - header.begin() + 1) +
+                               " of the header): rename or remove one."));
       }
 
     IndentationData data;
@@ -164,27 +181,51 @@ namespace ssc
           return number(field(name), name, where);
         };
 
+        // a value that lies outside the range of human tissue layers, in
+        // its column (the model would otherwise blame a setting it made)
+        const auto value_in = [&](const std::string &name,
+                                  const double       lower,
+                                  const double       upper,
+                                  const std::string &range) {
+          const double v = value(name);
+          AssertThrow(v > lower && v < upper,
+                      ExcMessage(where + ": column " + name + " is " +
+                                 field(name) + "; " + range + "."));
+          return v;
+        };
+        const std::string thickness_range =
+          "a layer thickness under the probe lies between " +
+          format_number(min_layer_thickness) + " and " +
+          format_number(max_layer_thickness) + " mm";
+        const std::string strain_range =
+          "a layer's compression over its thickness lies between -1 and 1 "
+          "(1: squashed to nothing)";
+
         IndentationTrial trial;
-        trial.line             = line_number;
-        trial.subject          = field("SubID");
-        trial.site             = field("Location");
-        trial.sex              = field("Gender");
-        trial.skin_thickness   = value("Skin");
-        trial.fat_thickness    = value("Fat");
-        trial.muscle_thickness = value("Muscle");
+        trial.line    = line_number;
+        trial.subject = field("SubID");
+        trial.site    = field("Location");
+        trial.sex     = field("Gender");
+        AssertThrow(!trial.subject.empty(),
+                    ExcMessage(where + ": column SubID is empty; every "
+                                       "trial needs its subject."));
+        trial.skin_thickness   = value_in("Skin",
+                                        min_layer_thickness,
+                                        max_layer_thickness,
+                                        thickness_range);
+        trial.fat_thickness    = value_in("Fat",
+                                       min_layer_thickness,
+                                       max_layer_thickness,
+                                       thickness_range);
+        trial.muscle_thickness = value_in("Muscle",
+                                          min_layer_thickness,
+                                          max_layer_thickness,
+                                          thickness_range);
         trial.max_force        = value("MaxForce");
         const double pressure  = value("maxForce_normArea");
-        trial.skin_strain      = value("SkinStrain");
-        trial.fat_strain       = value("FatStrain");
-        trial.muscle_strain    = value("MuscleStrain");
-        for (const auto &[name, thickness] :
-             {std::make_pair("Skin", trial.skin_thickness),
-              std::make_pair("Fat", trial.fat_thickness),
-              std::make_pair("Muscle", trial.muscle_thickness)})
-          AssertThrow(thickness > 0,
-                      ExcMessage(where + ": the " + name +
-                                 " thickness must be positive (mm), not " +
-                                 field(name) + "."));
+        trial.skin_strain      = value_in("SkinStrain", -1, 1, strain_range);
+        trial.fat_strain       = value_in("FatStrain", -1, 1, strain_range);
+        trial.muscle_strain    = value_in("MuscleStrain", -1, 1, strain_range);
         AssertThrow(trial.max_force > 0 && pressure > 0,
                     ExcMessage(where + ": MaxForce and maxForce_normArea "
                                        "must be positive."));
@@ -192,6 +233,16 @@ namespace ssc
         trial.surface_stiffness = value("Total_Stiff") * trial.probe_area;
         AssertThrow(trial.surface_stiffness > 0,
                     ExcMessage(where + ": Total_Stiff must be positive."));
+        // the split is by subject, and the medians count each trial once
+        for (const IndentationTrial &earlier : data.trials)
+          AssertThrow(earlier.subject != trial.subject ||
+                        earlier.site != trial.site,
+                      ExcMessage(where + " is a second trial of subject " +
+                                 trial.subject + " at site " + trial.site +
+                                 " (the first is on line " +
+                                 std::to_string(earlier.line) +
+                                 "): the table holds one trial per subject and "
+                                 "site; remove the repeated row."));
         data.trials.push_back(trial);
       }
     std::string site_list;

@@ -6,6 +6,7 @@
 
 #include <ssc/embedding/point_locator.h>
 #include <ssc/identification/probe_forward_model.h>
+#include <ssc/mesh/mesh_parameters.h>
 #include <ssc/scenes/indentation_output.h>
 #include <ssc/scenes/mechanics_model.h>
 #include <ssc/scenes/punch_loading.h>
@@ -47,6 +48,27 @@ namespace ssc
                "9L4's (45 x 15 = 675 mm^2) face.";
     AssertThrow(false, ExcMessage(message.str()));
     return {0, 0};
+  }
+
+
+  void
+  ProbeForwardModel::check_trial(const IndentationTrial &trial,
+                                 const double            patch_margin)
+  {
+    const double length = probe_face(trial).first;
+    const double patch_length =
+      length + 2 * patch_margin * trial.total_thickness();
+    std::ostringstream message;
+    message << "Line " << trial.line << " of the data (subject "
+            << trial.subject << ", " << trial.site << "): a patch of "
+            << "Identification/Patch margin = " << patch_margin << " times "
+            << "the tissue thickness " << trial.total_thickness()
+            << " mm beyond the probe would be " << patch_length
+            << " mm long, more than the " << MeshParameters::max_patch_length
+            << " mm a model may be: lower the Patch margin or check the "
+               "line's thicknesses.";
+    AssertThrow(patch_length <= MeshParameters::max_patch_length,
+                ExcMessage(message.str()));
   }
 
 

@@ -77,15 +77,27 @@ namespace ssc
           strain_times_pressure[i] += strains[i] * pressure;
         pressure_squared += pressure * pressure;
       }
+    const std::array<const char *, 3> strain_columns = {
+      {"SkinStrain", "FatStrain", "MuscleStrain"}};
     std::array<double, 3> moduli;
     for (unsigned int i = 0; i < 3; ++i)
       {
-        AssertThrow(strain_times_pressure[i] > 0,
-                    ExcMessage(std::string("Springs in series: the ") +
-                               trial_layer_names[i] +
-                               " layer's strains do not grow with the "
-                               "pressure in these trials; its modulus is "
-                               "undetermined."));
+        if (!(strain_times_pressure[i] > 0))
+          {
+            // name the data the user can check: the trials' lines
+            std::ostringstream message;
+            message
+              << "Springs in series: the " << trial_layer_names[i]
+              << " layer's compressions (column " << strain_columns[i]
+              << " of Identification/Data file) do not grow with the pressure "
+                 "over the training trials on lines";
+            for (const auto &trial : trials)
+              message << ' ' << trial.line << " (" << trial.layer_strains()[i]
+                      << ')';
+            message << ": its modulus is undetermined; check these values "
+                       "(compression is positive).";
+            AssertThrow(false, ExcMessage(message.str()));
+          }
         moduli[i] = pressure_squared / strain_times_pressure[i];
       }
     return SpringSeriesModel(moduli);

@@ -51,7 +51,8 @@ namespace ssc
     prm.add_parameter("Split seed",
                       split_seed,
                       "Seed of the shuffle that splits the subjects into "
-                      "training and held-out ones.");
+                      "training and held-out ones.",
+                      Patterns::Integer(0));
     prm.add_parameter("Fitted moduli",
                       fitted_moduli,
                       "Layers whose Young's modulus is fitted; the others "
@@ -110,6 +111,10 @@ namespace ssc
                            std::to_string(patch_margin) +
                            " is below 0.5 tissue thicknesses: the patch's "
                            "sides would hold the tissue under the probe."));
+    for (auto site = sites.begin(); site != sites.end(); ++site)
+      AssertThrow(std::find(site + 1, sites.end(), *site) == sites.end(),
+                  ExcMessage("Identification/Sites names " + *site +
+                             " twice: each site is fitted once."));
     const auto fitted = fitted_measurements();
     const auto layers = fitted_layers();
     AssertThrow(std::count(fitted.begin(), fitted.end(), true) >=

@@ -53,14 +53,14 @@ namespace ssc
                    const TrialSplit     &split,
                    ConditionalOStream   &pcout) const;
 
-    /// Splits @p site's @p trials by subject, fits the moduli to the
-    /// training ones and predicts every trial with them and with the
-    /// springs-in-series baseline.
+    /// Fits the moduli to @p site's training trials of @p split and
+    /// predicts every trial with them and with the springs-in-series
+    /// baseline.
     SiteFit
-    fit_site(const std::string                   &site,
-             const std::vector<IndentationTrial> &trials,
-             const LayerModuliFit                &fitter,
-             ConditionalOStream                  &pcout) const;
+    fit_site(const std::string    &site,
+             const TrialSplit     &split,
+             const LayerModuliFit &fitter,
+             ConditionalOStream   &pcout) const;
   };
 } // namespace ssc
 

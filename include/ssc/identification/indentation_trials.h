@@ -81,14 +81,21 @@ namespace ssc
     std::vector<unsigned int> incomplete_lines;
   };
 
+  /// The range of layer thicknesses (mm) a trial may have: beyond it a
+  /// value is a typing or unit error (the MULTIS table: 0.47 to 85 mm).
+  constexpr double min_layer_thickness = 0.05;
+  constexpr double max_layer_thickness = 300;
+
   /**
    * Reads the MULTIS per-trial table (comma separated, a header naming the
    * columns; the columns ssc needs are found by name), keeping the trials
    * of @p sites (all if empty). Throws with a message naming the file and
    * line for a row whose field count differs from the header's, a value
-   * that is not a number, a non-positive thickness, force or probe area;
-   * naming the column for a header without one that ssc needs; and if no
-   * trial of @p sites remains.
+   * that is not a number, a thickness outside [min_layer_thickness,
+   * max_layer_thickness], a strain outside (-1, 1), a non-positive force or
+   * probe area, an empty subject, a second trial of one subject at one
+   * site; naming the column for a header without one that ssc needs or
+   * with it twice; and if no trial of @p sites remains.
    */
   IndentationData
   read_indentation_trials(const std::string              &filename,

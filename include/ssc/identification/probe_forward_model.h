@@ -62,6 +62,16 @@ namespace ssc
     static std::pair<double, double>
     probe_face(const IndentationTrial &trial);
 
+    /**
+     * Throws, naming the data line and Identification/Patch margin, unless
+     * @p trial has a known probe face and a patch of @p patch_margin tissue
+     * thicknesses beyond it stays within MeshParameters::max_patch_length
+     * (checked before the first fit; the model would otherwise blame the
+     * Mesh/Patch length it was given).
+     */
+    static void
+    check_trial(const IndentationTrial &trial, double patch_margin);
+
   private:
     /// The overrides that make the run's parameter file @p trial's model.
     std::vector<std::string>

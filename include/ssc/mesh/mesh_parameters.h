@@ -64,12 +64,15 @@ namespace ssc
    */
   struct MeshParameters
   {
-    MeshLayout   layout          = MeshLayout::box;
-    MeshSymmetry symmetry        = MeshSymmetry::none;
-    double       patch_length_x  = 40;
-    double       patch_length_y  = 40;
-    double       cell_size       = 2;
-    double       core_half_width = 10;
+    MeshLayout   layout   = MeshLayout::box;
+    MeshSymmetry symmetry = MeshSymmetry::none;
+    /// The largest patch length ssc accepts, mm.
+    static constexpr double max_patch_length = 1e4;
+
+    double patch_length_x  = 40;
+    double patch_length_y  = 40;
+    double cell_size       = 2;
+    double core_half_width = 10;
     /// 0: the same as core_half_width.
     double core_half_width_y = 0;
     /// 0: a uniform core.
@@ -112,6 +115,11 @@ namespace ssc
       return (d == 1 && core_half_width_y > 0) ? core_half_width_y :
                                                  core_half_width;
     }
+
+    /// What to change for a coarser mesh, naming only the parameters
+    /// that refine this one (for the messages of the size limits).
+    std::string
+    coarsening_advice() const;
 
     /// Declares section "Mesh", bound to the members.
     void
