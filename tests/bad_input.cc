@@ -76,6 +76,17 @@ main(int argc, char **argv)
     dealii::deallog << "missing file: exit status " << status << std::endl
                     << "  " << message << std::endl;
   }
+  {
+    std::filesystem::create_directories("a_folder.prm");
+    std::ostringstream out, err;
+    const int          status =
+      ssc::run_command_line({"a_folder.prm"}, MPI_COMM_WORLD, out, err);
+    std::string message = err.str();
+    message.pop_back(); // the final newline
+    dealii::deallog << "a folder as the parameter file: exit status " << status
+                    << std::endl
+                    << "  " << message << std::endl;
+  }
   check("unknown parameter", "subsection Mesh\n  set Cell sise = 2\nend\n");
   check("unknown section", "subsection Meshes\n  set Cell size = 2\nend\n");
   check("malformed value", "subsection Mesh\n  set Cell size = two\nend\n");
@@ -209,6 +220,13 @@ main(int argc, char **argv)
   check("growth where no lobule may grow",
         growth + "subsection Growth\n  set Layers = fat\n"
                  "  set Growing lobule fraction = 0\nend\n");
+  check("growth where the draws let no lobule grow",
+        growth + "subsection Growth\n  set Layers = fat\n"
+                 "  set Growing lobule fraction = 1e-6\nend\n"
+                 "subsection Microstructure\n  set Lobules = true\nend\n");
+  check("growth of a billion mm^3",
+        growth + "subsection Growth\n  set Layers = fat\n"
+                 "  set Added volume = 1e9\nend\n");
   check("contracted ligaments at small strain",
         std::string(valid_stack) +
           "subsection Embedded\n  subsection Ligaments\n"
@@ -321,6 +339,12 @@ main(int argc, char **argv)
   check("a quarter model with lobules",
         valid_stack,
         {"-s", "Mesh/Symmetry=quarter", "-s", "Microstructure/Lobules=true"});
+  check("a quarter model of a thickness that is not symmetric",
+        valid_stack,
+        {"-s",
+         "Mesh/Symmetry=quarter",
+         "-s",
+         "Layer stack/fat/Thickness=4 + 0.05*x"});
   check("a depth uncertainty per force with the wrong count",
         valid_stack,
         {"-s",
@@ -339,6 +363,14 @@ main(int argc, char **argv)
     "a model larger than the memory allowed",
     valid_stack,
     {"-s", "Limits/Memory fraction=0.01", "-s", "Mesh/Global refinements=2"});
+  check("a core edge cell size of 1e-9 mm",
+        valid_stack,
+        {"-s",
+         "Mesh/Core edge cell size=1e-9",
+         "-s",
+         "Mesh/Grading ratio=1.1",
+         "-s",
+         "Run/Output directory=results"});
   check("an elevation grid of 1e-3 mm",
         growth + "subsection Growth\n  set Layers = fat\n"
                  "  set Grid spacing = 1e-3\nend\n");
@@ -421,6 +453,15 @@ main(int argc, char **argv)
     check("identification of a circular punch",
           identification,
           with("Punch/Shape=circle"));
+    check("identification of one site twice",
+          identification,
+          with("Identification/Sites=LA_A, LA_A"));
+    check("identification with a negative split seed",
+          identification,
+          with("Identification/Split seed=-1"));
+    check("identification with a patch a million tissue thicknesses wide",
+          identification,
+          with("Identification/Patch margin=1e6"));
     check("identification with an unknown probe face",
           identification,
           {"-s",

@@ -75,19 +75,19 @@ namespace ssc
 
   void
   ResourceLimits::require_memory(const double       bytes,
-                                 const std::string &what) const
+                                 const std::string &what,
+                                 const std::string &advice) const
   {
     const double available = memory_fraction * physical_memory();
     if (std::isfinite(bytes) && bytes <= available)
       return;
     std::ostringstream message;
     message.precision(3);
-    message
-      << what << " would need about " << bytes / 1e9
-      << " GB, more than Limits/Memory fraction = " << memory_fraction
-      << " of the " << physical_memory() / 1e9
-      << " GB this run may use (physical memory, cgroup, ulimit -v): coarsen the mesh (Mesh/Cell size, refinements, Cells "
-         "across) or lower Elasticity/Degree.";
+    message << what << " would need about " << bytes / 1e9
+            << " GB, more than Limits/Memory fraction = " << memory_fraction
+            << " of the " << physical_memory() / 1e9
+            << " GB this run may use (physical memory, cgroup, ulimit -v): "
+            << advice << '.';
     AssertThrow(false, ExcMessage(message.str()));
   }
 

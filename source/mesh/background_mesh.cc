@@ -216,9 +216,7 @@ namespace ssc
                             limits.max_cells,
                             "The background mesh's cell count",
                             "Max cells",
-                            "use a larger Mesh/Cell size or Grading ratio, "
-                            "fewer Mesh/Global refinements or fewer Layer "
-                            "stack/<layer>/Cells across");
+                            parameters.coarsening_advice());
     const unsigned int n_layers = layers.n_layers();
 
     const std::vector<double> z_steps = vertical_steps(layers, parameters);

@@ -357,6 +357,36 @@ namespace ssc
   }
 
 
+  void
+  LayerStack::check_mirror_symmetric(const double Lx, const double Ly) const
+  {
+    const unsigned int n = 20;
+    for (const auto &layer : layers)
+      if (!layer.has_constant_thickness())
+        for (unsigned int i = 0; i <= n; ++i)
+          for (unsigned int j = 0; j <= n; ++j)
+            {
+              const double x = Lx / 2 * i / n, y = Ly / 2 * j / n;
+              const double t = layer.thickness(x, y);
+              for (const auto &[xm, ym] : {std::pair(-x, y), std::pair(x, -y)})
+                {
+                  const double tm = layer.thickness(xm, ym);
+                  if (std::abs(tm - t) <= 1e-9 * std::max(1., std::abs(t)))
+                    continue;
+                  std::ostringstream msg;
+                  msg << "Layer stack/" << layer.name << "/Thickness = '"
+                      << layer.thickness_expression << "' is " << t
+                      << " mm at (x, y) = (" << x << ", " << y << ") but " << tm
+                      << " mm at the mirrored point (" << xm << ", " << ym
+                      << "): Mesh/Symmetry = quarter models a problem "
+                         "symmetric about x = 0 and y = 0; set Symmetry = "
+                         "none for this layer stack.";
+                  AssertThrow(false, ExcMessage(msg.str()));
+                }
+            }
+  }
+
+
   double
   LayerStack::depth_of_interface(const unsigned int i,
                                  const double       x,

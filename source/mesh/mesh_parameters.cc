@@ -43,18 +43,18 @@ namespace ssc
       "(Patch lengths stay those of the whole patch) and hold the normal "
       "displacement on the planes x = 0 and y = 0: a quarter of the DoFs for "
       "a problem symmetric about both planes (the layer thicknesses too: "
-      "ssc does not check expressions). Forces, stiffness and areas are "
+      "ssc samples them at mirrored points). Forces, stiffness and areas are "
       "reported for the whole patch. Box layout and the indentation scene "
       "without microstructure or edge contact.",
       Patterns::Selection(enum_names<MeshSymmetry>()));
     prm.add_parameter("Patch length x",
                       patch_length_x,
                       "Lateral extent of the patch in x, mm, centred at 0.",
-                      Patterns::Double(0, 1e4));
+                      Patterns::Double(0, max_patch_length));
     prm.add_parameter("Patch length y",
                       patch_length_y,
                       "Lateral extent of the patch in y, mm, centred at 0.",
-                      Patterns::Double(0, 1e4));
+                      Patterns::Double(0, max_patch_length));
   }
 
 
@@ -183,6 +183,23 @@ namespace ssc
                       "region (hanging nodes are constrained).",
                       Patterns::Integer(0, 20));
     prm.leave_subsection();
+  }
+
+
+  std::string
+  MeshParameters::coarsening_advice() const
+  {
+    std::string advice = "use a larger Mesh/";
+    if (layout == MeshLayout::o_grid)
+      advice += "O-grid/Edge cell size or Radial grading";
+    else
+      advice += std::string("Cell size, Grading ratio") +
+                (core_edge_cell_size > 0 ? ", Core edge cell size" : "");
+    if (global_refinements > 0)
+      advice += ", fewer Mesh/Global refinements";
+    if (local_refinements > 0)
+      advice += ", fewer Mesh/Region of interest/Local refinements";
+    return advice + " or fewer Layer stack/<layer>/Cells across";
   }
 
 

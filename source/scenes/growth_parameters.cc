@@ -49,7 +49,7 @@ namespace ssc
                       "1000 mm^3): the growth ratio g of the selected "
                       "material is this divided by its volume (each "
                       "lobule's weighted by its Lobule growth spread "
-                      "draw).",
+                      "draw), at most 10 (fat eleven times its volume).",
                       Patterns::Double(0));
     prm.add_parameter("Load steps",
                       load_steps,

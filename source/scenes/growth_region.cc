@@ -38,8 +38,9 @@ namespace ssc
                 uniform(generator) < parameters.growing_lobule_fraction;
               const double w =
                 std::exp(spread * normal(generator) - spread * spread / 2);
-              selection.weight.push_back(
-                grows && parameters.contains(lobule.centroid) ? w : 0.);
+              const bool inside = parameters.contains(lobule.centroid);
+              lobules_in_region += inside;
+              selection.weight.push_back(grows && inside ? w : 0.);
             }
         }
   }

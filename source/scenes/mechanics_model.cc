@@ -49,12 +49,12 @@ namespace ssc
                             parameters.limits.max_dofs,
                             "The number of DoFs",
                             "Max DoFs",
-                            "use a coarser mesh (Mesh/Cell size, refinements, "
-                            "Layer stack/<layer>/Cells across)");
+                            parameters.mesh.coarsening_advice());
     parameters.limits.require_memory(
       dofs * bytes_per_dof(parameters.elasticity.degree),
       "The linear system (" + std::to_string(static_cast<long>(dofs)) +
-        " DoFs)");
+        " DoFs)",
+      parameters.mesh.coarsening_advice() + ", or lower Elasticity/Degree");
     pcout << "Degrees of freedom: "
           << elastic_system->field().dof_handler().n_dofs() << " (Q"
           << parameters.elasticity.degree << ", "

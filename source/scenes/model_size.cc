@@ -100,9 +100,7 @@ namespace ssc
     const ResourceLimits &limits = parameters.limits;
     const double          cells =
       BackgroundMesh::estimated_cells(parameters.layers, parameters.mesh);
-    const std::string coarser = "use a larger Mesh/Cell size or Grading "
-                                "ratio, fewer Mesh/Global refinements or "
-                                "fewer Layer stack/<layer>/Cells across";
+    const std::string coarser = parameters.mesh.coarsening_advice();
     ResourceLimits::require(cells,
                             limits.max_cells,
                             "The background mesh's cell count",
@@ -117,7 +115,8 @@ namespace ssc
         limits.require_memory(dofs * bytes_per_dof(degree),
                               "The linear system (" +
                                 std::to_string(static_cast<long>(dofs)) +
-                                " DoFs, estimated)");
+                                " DoFs, estimated)",
+                              coarser + ", or lower Elasticity/Degree");
       }
     if (parameters.microstructure.lobules ||
         parameters.microstructure.ligaments)

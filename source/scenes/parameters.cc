@@ -52,6 +52,33 @@ namespace ssc
         prm.leave_subsection();
       AssertThrow(problem.empty(), ExcMessage("-s '" + text + "': " + problem));
     }
+
+    /// Throws unless @p file is a regular file of a parameter file's size;
+    /// @p where says who names it (empty for the command line).
+    void
+    check_parameter_file(const std::filesystem::path &file,
+                         const std::string           &where)
+    {
+      namespace fs                   = std::filesystem;
+      const std::uintmax_t  max_size = 16u << 20;
+      std::error_code       error;
+      const fs::file_status status = fs::status(file, error);
+      const std::string name = where + (where.empty() ? "Cannot" : ": cannot") +
+                               " open the parameter file '" + file.string() +
+                               "': ";
+      AssertThrow(fs::exists(status), ExcMessage(name + "no such file."));
+      AssertThrow(!fs::is_directory(status),
+                  ExcMessage(name + "it is a folder, not a .prm file."));
+      AssertThrow(fs::is_regular_file(status),
+                  ExcMessage(name + "it is not a regular file (a device or a "
+                                    "pipe?)."));
+      const std::uintmax_t size = fs::file_size(file, error);
+      AssertThrow(!error && size <= max_size,
+                  ExcMessage(name + "it holds " + std::to_string(size) +
+                             " bytes, more than the " +
+                             std::to_string(max_size >> 20) +
+                             " MB a parameter file may have."));
+    }
   } // namespace
 
 
@@ -113,10 +140,9 @@ namespace ssc
               Utilities::trim(Utilities::trim(lines[i]).substr(first.size())));
             if (included.is_relative())
               included = std::filesystem::path(file).parent_path() / included;
-            AssertThrow(std::filesystem::is_regular_file(included),
-                        ExcMessage(file + ", line " + std::to_string(i + 1) +
-                                   ": cannot open the included file '" +
-                                   included.string() + "'."));
+            check_parameter_file(included,
+                                 file + ", line " + std::to_string(i + 1) +
+                                   " (include)");
             parse_with_includes(
               prm, included.string(), skip_undefined, depth + 1, n_files);
           }
@@ -149,9 +175,7 @@ namespace ssc
                    const std::vector<std::string> &overrides)
   {
     if (!file.empty())
-      AssertThrow(std::filesystem::is_regular_file(file),
-                  ExcMessage("Cannot open the parameter file '" + file +
-                             "': no such file."));
+      check_parameter_file(file, "");
 
     // First pass: only the layer list matters, everything else is skipped.
     std::vector<std::string> names;
@@ -283,6 +307,8 @@ namespace ssc
                              "the box layout, "
                              "without Microstructure/Lobules or Ligaments "
                              "and without Punch/Edge contact."));
+    if (mesh.symmetry == MeshSymmetry::quarter)
+      layers.check_mirror_symmetric(mesh.patch_length_x, mesh.patch_length_y);
     AssertThrow(punch.contact != PunchContact::friction || nonlinear,
                 ExcMessage("Punch/Contact = friction is nonlinear: it needs "
                            "Newton's method, so give at least one layer a "

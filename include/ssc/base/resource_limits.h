@@ -46,9 +46,12 @@ namespace ssc
             const std::string &advice);
 
     /// Throws unless @p bytes fit in memory_fraction of the physical
-    /// memory of this machine; @p what says whose memory it is.
+    /// memory of this machine; @p what says whose memory it is, @p advice
+    /// what to change.
     void
-    require_memory(const double bytes, const std::string &what) const;
+    require_memory(const double       bytes,
+                   const std::string &what,
+                   const std::string &advice) const;
 
     /// Memory this run may use, bytes: the machine's physical memory, or
     /// less where a cgroup or the address-space limit (ulimit -v) says so.

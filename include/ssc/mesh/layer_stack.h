@@ -148,6 +148,15 @@ namespace ssc
     void
     check_thickness_at(const double x, const double y) const;
 
+    /**
+     * Checks that every thickness is the same at (x, y), (-x, y) and
+     * (x, -y) over the patch, sampled on a regular grid: a quarter model
+     * (Mesh/Symmetry = quarter) would otherwise answer for the mirror image
+     * of its first quadrant. Throws naming the layer and both points.
+     */
+    void
+    check_mirror_symmetric(const double Lx, const double Ly) const;
+
     unsigned int
     n_layers() const
     {

@@ -36,16 +36,22 @@ namespace ssc
    */
   struct GrowthParameters
   {
-    std::vector<std::string> layers             = {"SAT", "DAT"};
-    GrowthRegionShape        shape              = GrowthRegionShape::patch;
-    Point<3>                 centre             = Point<3>(0, 0, -5);
-    Point<3>                 semi_axes          = Point<3>(10, 10, 5);
-    double                   added_volume       = 1000;
-    unsigned int             load_steps         = 4;
-    double                   trend_width        = 4;
-    double                   grid_spacing       = 0.5;
-    double                   dimple_depth       = 0.01;
-    double                   metrics_half_width = 0;
+    std::vector<std::string> layers    = {"SAT", "DAT"};
+    GrowthRegionShape        shape     = GrowthRegionShape::patch;
+    Point<3>                 centre    = Point<3>(0, 0, -5);
+    Point<3>                 semi_axes = Point<3>(10, 10, 5);
+    /// The largest mean growth ratio accepted: fat that grows to eleven
+    /// times its volume is beyond adipocyte hypertrophy (cells of obese
+    /// people hold a few times the lipid of lean ones) and beyond what a
+    /// hyperelastic lobule represents.
+    static constexpr double max_growth_ratio = 10;
+
+    double       added_volume       = 1000;
+    unsigned int load_steps         = 4;
+    double       trend_width        = 4;
+    double       grid_spacing       = 0.5;
+    double       dimple_depth       = 0.01;
+    double       metrics_half_width = 0;
     /// Lognormal spread (standard deviation of ln w) of the lobules' growth
     /// weights w, mean 1: lobules differ (hypertrophy is uneven).
     double lobule_growth_spread = 0;

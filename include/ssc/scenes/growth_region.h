@@ -44,6 +44,14 @@ namespace ssc
     std::vector<double>
     lobule_weights() const;
 
+    /// The lobules of the selected layers whose centroid lies in the
+    /// region, growing or not (for messages).
+    unsigned int
+    n_lobules_in_region() const
+    {
+      return lobules_in_region;
+    }
+
   private:
     /// The lobules of one selected layer and their growth weights (0: the
     /// lobule does not grow).
@@ -59,6 +67,7 @@ namespace ssc
     const GrowthParameters     &parameters;
     std::vector<bool>           layer_selected;
     std::vector<LayerSelection> selections; ///< per layer, may be empty
+    unsigned int                lobules_in_region = 0;
   };
 } // namespace ssc
 
