@@ -5,11 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include <ssc/base/input_file.h>
 #include <ssc/identification/indentation_trials.h>
 
 namespace ssc
@@ -66,40 +66,19 @@ namespace ssc
       text << value;
       return text.str();
     }
-
-    /// Throws unless @p filename is a readable table of a sensible size:
-    /// a folder or a device (/dev/zero) would be read as an empty or an
-    /// endless table.
-    void
-    check_data_file(const std::string &filename)
-    {
-      namespace fs                   = std::filesystem;
-      const std::uintmax_t  max_size = 64u << 20;
-      std::error_code       error;
-      const fs::file_status status = fs::status(filename, error);
-      const std::string data_file  = "The indentation data file '" + filename +
-                                    "' (Identification/Data file)";
-      AssertThrow(fs::exists(status),
-                  ExcMessage(data_file + " does not exist."));
-      AssertThrow(!fs::is_directory(status),
-                  ExcMessage(data_file + " is a folder, not a CSV file."));
-      AssertThrow(fs::is_regular_file(status),
-                  ExcMessage(data_file +
-                             " is not a regular file (a device or a pipe?)."));
-      const std::uintmax_t size = fs::file_size(filename, error);
-      AssertThrow(!error && size <= max_size,
-                  ExcMessage(data_file + " holds " + std::to_string(size) +
-                             " bytes, more than the " +
-                             std::to_string(max_size >> 20) +
-                             " MB a table of indentation trials needs."));
-    }
   } // namespace
 
   IndentationData
   read_indentation_trials(const std::string              &filename,
                           const std::vector<std::string> &sites)
   {
-    check_data_file(filename);
+    // a folder or a device (/dev/zero) would be read as an empty or an
+    // endless table
+    check_input_file(filename,
+                     "The indentation data file '" + filename +
+                       "' (Identification/Data file)",
+                     "a CSV file",
+                     64u << 20);
     std::ifstream in(filename);
     AssertThrow(in,
                 ExcMessage("The indentation data file '" + filename +

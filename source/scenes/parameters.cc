@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <ssc/base/input_file.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/microstructure/ligaments.h>
 #include <ssc/scenes/model_size.h>
@@ -14,6 +15,9 @@ namespace ssc
 {
   namespace
   {
+    /// A parameter file larger than this is no parameter file.
+    constexpr std::uintmax_t max_parameter_file_bytes = 16u << 20;
+
     /// Applies one "Section/Subsection/Name=value" override to @p prm.
     void
     apply_override(ParameterHandler &prm, const std::string &text)
@@ -51,33 +55,6 @@ namespace ssc
       for (unsigned int d = 0; d < depth; ++d)
         prm.leave_subsection();
       AssertThrow(problem.empty(), ExcMessage("-s '" + text + "': " + problem));
-    }
-
-    /// Throws unless @p file is a regular file of a parameter file's size;
-    /// @p where says who names it (empty for the command line).
-    void
-    check_parameter_file(const std::filesystem::path &file,
-                         const std::string           &where)
-    {
-      namespace fs                   = std::filesystem;
-      const std::uintmax_t  max_size = 16u << 20;
-      std::error_code       error;
-      const fs::file_status status = fs::status(file, error);
-      const std::string name = where + (where.empty() ? "Cannot" : ": cannot") +
-                               " open the parameter file '" + file.string() +
-                               "': ";
-      AssertThrow(fs::exists(status), ExcMessage(name + "no such file."));
-      AssertThrow(!fs::is_directory(status),
-                  ExcMessage(name + "it is a folder, not a .prm file."));
-      AssertThrow(fs::is_regular_file(status),
-                  ExcMessage(name + "it is not a regular file (a device or a "
-                                    "pipe?)."));
-      const std::uintmax_t size = fs::file_size(file, error);
-      AssertThrow(!error && size <= max_size,
-                  ExcMessage(name + "it holds " + std::to_string(size) +
-                             " bytes, more than the " +
-                             std::to_string(max_size >> 20) +
-                             " MB a parameter file may have."));
     }
   } // namespace
 
@@ -140,9 +117,12 @@ namespace ssc
               Utilities::trim(Utilities::trim(lines[i]).substr(first.size())));
             if (included.is_relative())
               included = std::filesystem::path(file).parent_path() / included;
-            check_parameter_file(included,
-                                 file + ", line " + std::to_string(i + 1) +
-                                   " (include)");
+            check_input_file(included.string(),
+                             file + ", line " + std::to_string(i + 1) +
+                               ": the included parameter file '" +
+                               included.string() + "'",
+                             "a .prm file",
+                             max_parameter_file_bytes);
             parse_with_includes(
               prm, included.string(), skip_undefined, depth + 1, n_files);
           }
@@ -175,7 +155,10 @@ namespace ssc
                    const std::vector<std::string> &overrides)
   {
     if (!file.empty())
-      check_parameter_file(file, "");
+      check_input_file(file,
+                       "The parameter file '" + file + "'",
+                       "a .prm file",
+                       max_parameter_file_bytes);
 
     // First pass: only the layer list matters, everything else is skipped.
     std::vector<std::string> names;
