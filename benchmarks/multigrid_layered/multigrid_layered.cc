@@ -19,6 +19,7 @@
 //
 //   multigrid_layered [max refinements Q1] [max refinements Q2]
 //                     [lateral coarse cells n] [quick: nu 0.3, 1:60 only]
+//                     [Chebyshev degree] [equal: five 3.6 mm layers]
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -69,10 +70,21 @@ namespace
     double       nu;
     double       contrast; // 60 or 1000
     unsigned int lateral_cells;
+    /// Chebyshev degree of the multigrid smoother.
+    unsigned int smoother_degree;
+    /// Five layers of equal thickness (3.6 mm) instead of punch.prm's.
+    bool equal_layers;
   };
 
-  /// Layer thicknesses (mm, from the top) of prm/punch.prm.
-  const std::vector<double> thicknesses = {1.5, 3, 0.5, 3, 10};
+  /// Layer thicknesses (mm, from the top) of prm/punch.prm, or five
+  /// equal ones of the same total (cells without a thin layer).
+  std::vector<double>
+  layer_thicknesses(const bool equal_layers)
+  {
+    if (equal_layers)
+      return std::vector<double>(5, 3.6);
+    return {1.5, 3, 0.5, 3, 10};
+  }
 
   /// The layers' Young's moduli (MPa); SM stiffened for 1:1000.
   std::vector<double>
@@ -138,7 +150,7 @@ namespace
            double             solve) const;
 
     const Case          c;
-    std::vector<double> lambda, mu;
+    std::vector<double> thicknesses, lambda, mu;
 
     Triangulation<dim>        tria;
     FESystem<dim>             fe;
@@ -156,6 +168,7 @@ namespace
 
   LayeredPunch::LayeredPunch(const Case &c)
     : c(c)
+    , thicknesses(layer_thicknesses(c.equal_layers))
     , tria(Triangulation<dim>::limit_level_difference_at_vertices)
     , fe(FE_Q<dim>(c.degree), dim)
     , dof_handler(tria)
@@ -311,6 +324,7 @@ namespace
   {
     std::cout << c.degree << ',' << c.refinements << ',' << c.nu << ','
               << c.contrast << ',' << c.lateral_cells << ','
+              << c.smoother_degree << ',' << c.equal_layers << ','
               << dof_handler.n_dofs() << ',' << method << ',' << iterations
               << ',' << setup << ',' << solve << std::endl;
   }
@@ -333,7 +347,7 @@ namespace
     for (unsigned int level = 0; level < tria.n_levels(); ++level)
       {
         smoother_data[level].smoothing_range     = 15.;
-        smoother_data[level].degree              = 4;
+        smoother_data[level].degree              = c.smoother_degree;
         smoother_data[level].eig_cg_n_iterations = 20;
         auto diagonal = std::make_shared<DiagonalMatrix<Vector<double>>>();
         diagonal->get_vector().reinit(dof_handler.n_dofs(level));
@@ -416,14 +430,19 @@ main(int argc, char **argv)
   const unsigned int               max_q1  = argc > 1 ? std::stoi(argv[1]) : 3;
   const unsigned int               max_q2  = argc > 2 ? std::stoi(argv[2]) : 2;
   const unsigned int               lateral = argc > 3 ? std::stoi(argv[3]) : 6;
-  const bool quick = argc > 4 && std::string(argv[4]) == "quick";
-  std::cout << "degree,refinements,nu,contrast,lateral_cells,dofs,method,"
-               "iterations,setup_s,solve_s"
+  const bool         quick = argc > 4 && std::string(argv[4]) == "quick";
+  const unsigned int smoother_degree = argc > 5 ? std::stoi(argv[5]) : 4;
+  const bool         equal_layers = argc > 6 && std::string(argv[6]) == "equal";
+  std::cout << "degree,refinements,nu,contrast,lateral_cells,"
+               "smoother_degree,equal_layers,dofs,method,iterations,"
+               "setup_s,solve_s"
             << std::endl;
   for (const double contrast : {60., 1000.})
     for (const double nu : {0.3, 0.45, 0.49})
       for (const unsigned int degree : {1u, 2u})
         for (unsigned int r = 1; r <= (degree == 1 ? max_q1 : max_q2); ++r)
           if (!quick || (contrast == 60. && nu == 0.3))
-            LayeredPunch({degree, r, nu, contrast, lateral}).run();
+            LayeredPunch(
+              {degree, r, nu, contrast, lateral, smoother_degree, equal_layers})
+              .run();
 }
