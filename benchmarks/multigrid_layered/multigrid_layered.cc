@@ -143,11 +143,16 @@ namespace
     void
     solve_amg();
 
+    /// CG on the system with @p preconditioner, at most
+    /// @p max_iterations (the count reported if it does not converge), and
+    /// one CSV line.
+    template <typename MatrixType, typename PreconditionerType>
     void
-    report(const std::string &method,
-           unsigned int       iterations,
-           double             setup,
-           double             solve) const;
+    solve_and_report(const std::string        &method,
+                     const MatrixType         &system_matrix,
+                     const PreconditionerType &preconditioner,
+                     unsigned int              max_iterations,
+                     double                    setup) const;
 
     const Case          c;
     std::vector<double> thicknesses, lambda, mu;
@@ -316,17 +321,31 @@ namespace
   }
 
 
+  template <typename MatrixType, typename PreconditionerType>
   void
-  LayeredPunch::report(const std::string &method,
-                       const unsigned int iterations,
-                       const double       setup,
-                       const double       solve) const
+  LayeredPunch::solve_and_report(const std::string        &method,
+                                 const MatrixType         &system_matrix,
+                                 const PreconditionerType &preconditioner,
+                                 const unsigned int        max_iterations,
+                                 const double              setup) const
   {
+    Timer          timer;
+    Vector<double> solution(dof_handler.n_dofs());
+    SolverControl  control(max_iterations, 1e-8 * rhs.l2_norm(), false, false);
+    SolverCG<Vector<double>> cg(control);
+    unsigned int             iterations = max_iterations;
+    try
+      {
+        cg.solve(system_matrix, solution, rhs, preconditioner);
+        iterations = control.last_step();
+      }
+    catch (const SolverControl::NoConvergence &)
+      {}
     std::cout << c.degree << ',' << c.refinements << ',' << c.nu << ','
               << c.contrast << ',' << c.lateral_cells << ','
               << c.smoother_degree << ',' << c.equal_layers << ','
               << dof_handler.n_dofs() << ',' << method << ',' << iterations
-              << ',' << setup << ',' << solve << std::endl;
+              << ',' << setup << ',' << timer.wall_time() << std::endl;
   }
 
 
@@ -360,21 +379,8 @@ namespace
     Multigrid<Vector<double>>  mg(
       level_matrix, coarse, transfer, smoother, smoother);
     PreconditionMG<dim, Vector<double>, MGTransferPrebuilt<Vector<double>>>
-                 preconditioner(dof_handler, mg, transfer);
-    const double setup = timer.wall_time();
-    timer.restart();
-    Vector<double>           solution(dof_handler.n_dofs());
-    SolverControl            control(1000, 1e-8 * rhs.l2_norm(), false, false);
-    SolverCG<Vector<double>> cg(control);
-    unsigned int             iterations = control.max_steps();
-    try
-      {
-        cg.solve(matrix, solution, rhs, preconditioner);
-        iterations = control.last_step();
-      }
-    catch (const SolverControl::NoConvergence &)
-      {}
-    report("gmg", iterations, setup, timer.wall_time());
+      preconditioner(dof_handler, mg, transfer);
+    solve_and_report("gmg", matrix, preconditioner, 1000, timer.wall_time());
   }
 
 
@@ -396,20 +402,7 @@ namespace
     data.constant_modes = modes;
     TrilinosWrappers::PreconditionAMG amg;
     amg.initialize(trilinos_matrix, data);
-    const double setup = timer.wall_time();
-    timer.restart();
-    Vector<double>           solution(dof_handler.n_dofs());
-    SolverControl            control(2000, 1e-8 * rhs.l2_norm(), false, false);
-    SolverCG<Vector<double>> cg(control);
-    unsigned int             iterations = control.max_steps();
-    try
-      {
-        cg.solve(trilinos_matrix, solution, rhs, amg);
-        iterations = control.last_step();
-      }
-    catch (const SolverControl::NoConvergence &)
-      {}
-    report("amg", iterations, setup, timer.wall_time());
+    solve_and_report("amg", trilinos_matrix, amg, 2000, timer.wall_time());
   }
 
 
