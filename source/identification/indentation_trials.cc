@@ -127,6 +127,17 @@ namespace ssc
                                " of the header): rename or remove one."));
       }
 
+    const std::string thickness_range =
+      "a layer thickness under the probe lies between " +
+      format_number(min_layer_thickness) + " and " +
+      format_number(max_layer_thickness) + " mm";
+    const std::string strain_range =
+      "a layer's compression over its thickness lies between -1 and 1 "
+      "(1: squashed to nothing)";
+    // the line of each subject's trial at each site: the split is by
+    // subject, and the medians count each trial once
+    std::map<std::pair<std::string, std::string>, unsigned int> trial_line;
+
     IndentationData data;
     std::string     line;
     for (unsigned int line_number = 2; std::getline(in, line); ++line_number)
@@ -172,13 +183,6 @@ namespace ssc
                                  field(name) + "; " + range + "."));
           return v;
         };
-        const std::string thickness_range =
-          "a layer thickness under the probe lies between " +
-          format_number(min_layer_thickness) + " and " +
-          format_number(max_layer_thickness) + " mm";
-        const std::string strain_range =
-          "a layer's compression over its thickness lies between -1 and 1 "
-          "(1: squashed to nothing)";
 
         IndentationTrial trial;
         trial.line    = line_number;
@@ -212,16 +216,16 @@ namespace ssc
         trial.surface_stiffness = value("Total_Stiff") * trial.probe_area;
         AssertThrow(trial.surface_stiffness > 0,
                     ExcMessage(where + ": Total_Stiff must be positive."));
-        // the split is by subject, and the medians count each trial once
-        for (const IndentationTrial &earlier : data.trials)
-          AssertThrow(earlier.subject != trial.subject ||
-                        earlier.site != trial.site,
-                      ExcMessage(where + " is a second trial of subject " +
-                                 trial.subject + " at site " + trial.site +
-                                 " (the first is on line " +
-                                 std::to_string(earlier.line) +
-                                 "): the table holds one trial per subject and "
-                                 "site; remove the repeated row."));
+        const auto [first, is_new] =
+          trial_line.emplace(std::make_pair(trial.subject, trial.site),
+                             line_number);
+        AssertThrow(is_new,
+                    ExcMessage(where + " is a second trial of subject " +
+                               trial.subject + " at site " + trial.site +
+                               " (the first is on line " +
+                               std::to_string(first->second) +
+                               "): the table holds one trial per subject and "
+                               "site; remove the repeated row."));
         data.trials.push_back(trial);
       }
     std::string site_list;

@@ -53,31 +53,35 @@ namespace ssc
       const std::vector<double> &weights = selection.lobule_weights =
         region.lobule_weights();
       selection.selected_volume = system.growth().volume(system.field());
-      std::ostringstream none;
-      none << "Growth/Growing lobule fraction = "
-           << growth.growing_lobule_fraction << " lets none of the "
-           << region.n_lobules_in_region()
-           << " lobules in the growth region grow (draws of Growth/Random "
-              "seed): raise the fraction.";
-      AssertThrow(selection.selected_volume > 0 ||
-                    region.n_lobules_in_region() == 0,
-                  ExcMessage(none.str()));
+      if (!(selection.selected_volume > 0) && region.n_lobules_in_region() > 0)
+        {
+          std::ostringstream none;
+          none << "Growth/Growing lobule fraction = "
+               << growth.growing_lobule_fraction << " lets none of the "
+               << region.n_lobules_in_region()
+               << " lobules in the growth region grow (draws of "
+                  "Growth/Random seed): raise the fraction.";
+          AssertThrow(false, ExcMessage(none.str()));
+        }
       AssertThrow(selection.selected_volume > 0,
                   ExcMessage("Growth: no material grows (no lobule of "
                              "Growth/Layers has its centroid in the region, "
                              "and no point of those layers lies in it)."));
       selection.growth_ratio = growth.added_volume / selection.selected_volume;
-      std::ostringstream ratio;
-      ratio << "Growth/Added volume = " << growth.added_volume
-            << " mm^3 over the " << selection.selected_volume
-            << " mm^3 of growing fat (weighted) is a growth ratio g = "
-            << selection.growth_ratio << ", above the largest accepted, g = "
-            << GrowthParameters::max_growth_ratio
-            << " (fat eleven times its volume): lower the Added volume or "
-               "let more fat grow (Growth/Region, Layers, Growing lobule "
-               "fraction).";
-      AssertThrow(selection.growth_ratio <= GrowthParameters::max_growth_ratio,
-                  ExcMessage(ratio.str()));
+      if (!(selection.growth_ratio <= GrowthParameters::max_growth_ratio))
+        {
+          std::ostringstream ratio;
+          ratio << "Growth/Added volume = " << growth.added_volume
+                << " mm^3 over the " << selection.selected_volume
+                << " mm^3 of growing fat (weighted) is a growth ratio g = "
+                << selection.growth_ratio
+                << ", above the largest accepted, g = "
+                << GrowthParameters::max_growth_ratio
+                << " (fat eleven times its volume): lower the Added volume "
+                   "or let more fat grow (Growth/Region, Layers, Growing "
+                   "lobule fraction).";
+          AssertThrow(false, ExcMessage(ratio.str()));
+        }
       pcout << "Growth: " << weights.size() << " lobules, "
             << std::setprecision(6) << selection.selected_volume
             << " mm^3 of fat grow by g = " << selection.growth_ratio
