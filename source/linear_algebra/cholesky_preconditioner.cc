@@ -139,7 +139,8 @@ namespace ssc
     AssertThrow(Utilities::MPI::n_mpi_processes(communicator) == 1,
                 ExcMessage("Elasticity/Linear solver/Preconditioner = "
                            "cholesky factorises the whole matrix on one "
-                           "process: run on one MPI rank, or use amg."));
+                           "process: run on one MPI rank, or use ldlt (the "
+                           "factor distributed over the ranks) or amg."));
   }
 
 
@@ -147,6 +148,7 @@ namespace ssc
   CholeskyPreconditioner::initialize(
     const TrilinosWrappers::SparseMatrix &matrix)
   {
+    require_one_process(matrix.get_mpi_communicator());
     return refactorize(matrix, factorization, preconditioner);
   }
 

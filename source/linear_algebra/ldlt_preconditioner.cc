@@ -1,6 +1,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <Epetra_Import.h>
+#include <Epetra_Map.h>
+#include <Epetra_MpiComm.h>
 #include <Epetra_MultiVector.h>
 #include <dmumps_c.h>
 
@@ -31,18 +34,33 @@ namespace ssc
 
 
   /**
-   * One MUMPS instance (symmetric, SYM = 2: L D L^T with pivoting) on one
-   * process, as the Epetra operator whose inverse Krylov solvers apply. The
-   * matrix is passed as the coordinates of its upper triangle (1-based),
-   * which MUMPS reads for as long as the instance lives.
+   * One MUMPS instance (symmetric, SYM = 2: L D L^T with pivoting) on all
+   * processes of the matrix's communicator, as the Epetra operator whose
+   * inverse Krylov solvers apply. Each process hands MUMPS the coordinates
+   * of the upper triangle of its own rows (1-based global indices,
+   * distributed assembled input), which MUMPS reads for as long as the
+   * instance lives; the right-hand side is gathered on the first process
+   * and the solution scattered back (MUMPS's centralised solve).
    */
   class LdltPreconditioner::Factorization : public FactorOperator
   {
   public:
     explicit Factorization(const Epetra_CrsMatrix &matrix)
       : FactorOperator(matrix.RowMap())
+      , communicator(dynamic_cast<const Epetra_MpiComm &>(matrix.Comm()).Comm())
+      , gathered_map(matrix.NumGlobalRows(),
+                     Utilities::MPI::this_mpi_process(communicator) == 0 ?
+                       matrix.NumGlobalRows() :
+                       0,
+                     0,
+                     matrix.Comm())
+      , gather(gathered_map, matrix.RowMap())
+      , gathered(gathered_map, 1)
     {
-      id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
+      AssertThrow(matrix.RowMap().LinearMap(),
+                  ExcMessage("The L D L^T factor needs the rows numbered "
+                             "consecutively from 0 over the processes."));
+      id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(communicator));
       id.par          = 1; // the host works too
       id.sym          = 2; // general symmetric: indefinite allowed
       id.job          = -1;
@@ -50,10 +68,14 @@ namespace ssc
       AssertThrow(infog(id, 1) >= 0,
                   ExcMessage("MUMPS could not start (INFOG(1) = " +
                              std::to_string(infog(id, 1)) + ")."));
-      icntl(id, 1) = -1; // errors are reported through INFOG(1)
-      icntl(id, 2) = -1;
-      icntl(id, 3) = -1;
-      icntl(id, 4) = 0;
+      icntl(id, 1)  = -1; // errors are reported through INFOG(1)
+      icntl(id, 2)  = -1;
+      icntl(id, 3)  = -1;
+      icntl(id, 4)  = 0;
+      icntl(id, 18) = 3; // each process gives its own entries
+      // the last front factorised on one process, not by ScaLAPACK: its
+      // negative pivots are then counted too (the inertia, INFOG(12))
+      icntl(id, 13) = 1;
     }
 
     ~Factorization()
@@ -66,37 +88,40 @@ namespace ssc
     Factorization &
     operator=(const Factorization &) = delete;
 
+    /// Collective. False, and no factor, where MUMPS finds the matrix
+    /// numerically singular.
     bool
     factorize(const Epetra_CrsMatrix &matrix)
     {
-      usable              = false; // until this factorisation succeeds
-      const int     n     = matrix.NumMyRows();
-      UpperTriangle upper = upper_triangle(matrix);
-      value               = std::move(upper.value);
-      id.a                = value.data();
-      if (!analysed || upper.row_start != pattern.row_start ||
-          upper.column != pattern.column)
+      usable                  = false; // until this factorisation succeeds
+      UpperTriangle upper     = upper_triangle(matrix);
+      value                   = std::move(upper.value);
+      id.a_loc                = value.data();
+      const bool same_pattern = analysed &&
+                                upper.row_start == pattern.row_start &&
+                                upper.column == pattern.column;
+      if (Utilities::MPI::min(same_pattern ? 1u : 0u, communicator) == 0u)
         {
-          // MUMPS reads the triangle as coordinates, 1-based
+          // MUMPS reads the triangle as coordinates, 1-based and global
           pattern = std::move(upper);
           row.clear();
           column.clear();
-          for (int i = 0; i < n; ++i)
+          for (int i = 0; i < matrix.NumMyRows(); ++i)
             for (int k = pattern.row_start[i]; k < pattern.row_start[i + 1];
                  ++k)
               {
-                row.push_back(i + 1);
+                row.push_back(matrix.GRID(i) + 1);
                 column.push_back(pattern.column[k] + 1);
               }
-          id.n   = n;
-          id.nnz = row.size();
-          id.irn = row.data();
-          id.jcn = column.data();
-          id.job = 1;
+          id.n       = matrix.NumGlobalRows();
+          id.nnz_loc = row.size();
+          id.irn_loc = row.data();
+          id.jcn_loc = column.data();
+          id.job     = 1;
           dmumps_c(&id);
           AssertThrow(infog(id, 1) >= 0,
                       ExcMessage("MUMPS could not analyse the matrix (" +
-                                 std::to_string(n) + " rows, INFOG(1) = " +
+                                 std::to_string(id.n) + " rows, INFOG(1) = " +
                                  std::to_string(infog(id, 1)) + ")."));
           analysed = true;
         }
@@ -138,6 +163,7 @@ namespace ssc
       return usable ? infog(id, 12) : 0;
     }
 
+    /// Collective: the solve with the factor, one vector after the other.
     int
     ApplyInverse(const Epetra_MultiVector &X,
                  Epetra_MultiVector       &Y) const override
@@ -146,14 +172,17 @@ namespace ssc
         return -1;
       for (int v = 0; v < X.NumVectors(); ++v)
         {
-          std::copy_n(X[v], X.MyLength(), Y[v]);
-          id.rhs  = Y[v]; // overwritten with the solution
+          const Epetra_MultiVector x(View, X, v, 1);
+          Epetra_MultiVector       y(View, Y, v, 1);
+          gathered.Import(x, gather, Insert);
+          id.rhs  = gathered[0]; // overwritten with the solution
           id.nrhs = 1;
-          id.lrhs = X.MyLength();
+          id.lrhs = std::max(gathered.MyLength(), 1);
           id.job  = 3;
           dmumps_c(&id);
           if (infog(id, 1) < 0)
             return -1;
+          y.Export(gathered, gather, Insert);
         }
       return 0;
     }
@@ -165,10 +194,16 @@ namespace ssc
     }
 
   private:
-    mutable DMUMPS_STRUC_C id       = {};
-    bool                   analysed = false;
-    bool                   usable   = false;
-    /// the pattern of the analysed matrix, and its coordinates for MUMPS
+    const MPI_Comm communicator;
+    /// all rows on the first process, where MUMPS takes the right-hand
+    /// side and returns the solution, and the import that gathers them
+    const Epetra_Map           gathered_map;
+    const Epetra_Import        gather;
+    mutable Epetra_MultiVector gathered;
+    mutable DMUMPS_STRUC_C     id       = {};
+    bool                       analysed = false;
+    bool                       usable   = false;
+    /// this process's part of the analysed pattern, and its coordinates
     UpperTriangle          pattern;
     std::vector<MUMPS_INT> row, column;
     std::vector<double>    value;

@@ -143,6 +143,26 @@ namespace ssc
   {
     // a failed factorisation keeps no factor, a successful one drops the
     // other kind: the factor that is left, or else AMG, is the active one
+    if (parameters.preconditioner == DisplacementPreconditioner::ldlt)
+      {
+        if (ldlt.initialize(matrix))
+          {
+            if (ldlt.negative_pivots() == 0)
+              {
+                ++n_factorizations;
+                return;
+              }
+            if (allow_indefinite && parameters.factor_indefinite)
+              {
+                report_indefinite_factor();
+                return;
+              }
+          }
+        ldlt.clear();
+        report_amg_instead();
+        setup_amg(matrix);
+        return;
+      }
     ldlt.clear();
     if (parameters.preconditioner == DisplacementPreconditioner::cholesky)
       {
@@ -154,20 +174,41 @@ namespace ssc
         if (allow_indefinite && parameters.factor_indefinite &&
             ldlt.initialize(matrix))
           {
-            ++n_indefinite_factorizations;
-            if (progress != nullptr)
-              *progress << "  The tangent is not positive definite ("
-                        << ldlt.negative_pivots()
-                        << " negative eigenvalues): its L D L^T factor"
-                        << std::endl;
+            report_indefinite_factor();
             return;
           }
-        if (progress != nullptr)
-          *progress << "  The tangent is not positive definite: AMG "
-                       "instead of its Cholesky factor"
-                    << std::endl;
+        report_amg_instead();
       }
     setup_amg(matrix);
+  }
+
+
+  void
+  LinearSolver::report_indefinite_factor()
+  {
+    ++n_indefinite_factorizations;
+    if (progress != nullptr)
+      *progress << "  The tangent is not positive definite ("
+                << ldlt.negative_pivots()
+                << " negative eigenvalues): its L D L^T factor" << std::endl;
+  }
+
+
+  void
+  LinearSolver::report_amg_instead() const
+  {
+    if (progress != nullptr)
+      *progress << "  The tangent is not positive definite: AMG instead of "
+                   "its factor"
+                << std::endl;
+  }
+
+
+  std::string
+  LinearSolver::preconditioner_name() const
+  {
+    return to_string(parameters.method) + " + " +
+           to_string(parameters.preconditioner);
   }
 
 
@@ -427,7 +468,7 @@ namespace ssc
                              const bool new_preconditioner)
   {
     // truncated CG needs a positive definite preconditioner
-    if (new_preconditioner || ldlt.factorized())
+    if (new_preconditioner || ldlt.negative_pivots() > 0)
       setup_preconditioner(matrix, false);
     const double tolerance =
       std::max(std::max(parameters.tolerance, target.relative_tolerance) *

@@ -39,18 +39,24 @@ namespace ssc
       "factorised as L D L^T instead (MUMPS, symmetric indefinite with "
       "pivoting) and solved by GMRES (Factor indefinite tangents); "
       "trust-region steps, which need a positive definite preconditioner, "
-      "use amg for it.");
+      "use amg for it. ldlt: as cholesky, but every tangent is factorised "
+      "as L D L^T by MUMPS distributed over all MPI ranks (its inertia "
+      "tells whether the tangent is positive definite): the same answers "
+      "on any number of ranks, each rank holding part of the factor; on a "
+      "2-core machine no faster than cholesky on one rank "
+      "(benchmarks/distributed_factor).");
     prm.add_parameter(
       "Factor indefinite tangents",
       factor_indefinite,
-      "With Preconditioner = cholesky: factorise a tangent that is not "
-      "positive definite as L D L^T (true), or precondition it with amg "
+      "With Preconditioner = cholesky or ldlt: factorise a tangent that is "
+      "not positive definite as L D L^T (true), or precondition it with amg "
       "(false: for comparison, GMRES then needs thousands of iterations).");
     prm.add_parameter(
       "Refactorization iterations",
       refactorization_iterations,
-      "With Preconditioner = cholesky: a solve preconditioned by the factor "
-      "of an earlier matrix stops after this many iterations, the current "
+      "With Preconditioner = cholesky or ldlt: a solve preconditioned by "
+      "the factor of an earlier matrix stops after this many iterations, "
+      "the current "
       "matrix is factorised and the solve continues with the new factor.",
       Patterns::Integer(1, 10000));
     prm.add_parameter("Tolerance",

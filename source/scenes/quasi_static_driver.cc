@@ -107,6 +107,7 @@ namespace ssc
                                             {"load_cuts_per_step", cuts},
                                             {"wall_time_per_step", times}};
     const LinearSolver    &linear_solver = system.tangent_system().solver();
+    solver["preconditioner"]             = linear_solver.preconditioner_name();
     if (linear_solver.factorizations() > 0)
       solver["cholesky_factorizations"] = linear_solver.factorizations();
     if (linear_solver.indefinite_factorizations() > 0)

@@ -124,6 +124,9 @@ namespace ssc
     summary["memory_MB"] =
       Utilities::MPI::sum(resident_memory_MB(true), mpi_communicator);
     summary["memory_at_start_MB"] = memory_at_start_MB;
+    // the peak over the whole run (mesh, microstructure, solver) per DoF
+    summary["memory_per_dof_kB"] =
+      dofs > 0 ? summary["memory_MB"].get<double>() * 1024. / dofs : 0.;
     return summary;
   }
 

@@ -11,7 +11,6 @@
 #include <memory>
 #include <vector>
 
-#include <ssc/linear_algebra/cholesky_preconditioner.h>
 
 namespace ssc
 {
@@ -74,8 +73,8 @@ namespace ssc
    * (Re)factorises @p matrix into @p factorization (a FactorOperator with a
    * constructor from the matrix and a bool factorize(matrix)), made anew
    * where the matrix's map changed, and points @p preconditioner at it if
-   * the factorisation succeeded (at nothing otherwise). Refuses several
-   * processes.
+   * the factorisation succeeded (at nothing otherwise). Collective where
+   * the factorisation is distributed.
    */
   template <typename Factorization>
   bool
@@ -83,7 +82,6 @@ namespace ssc
               std::shared_ptr<Factorization>       &factorization,
               Teuchos::RCP<Epetra_Operator>        &preconditioner)
   {
-    CholeskyPreconditioner::require_one_process(matrix.get_mpi_communicator());
     const Epetra_CrsMatrix &crs = matrix.trilinos_matrix();
     if (factorization == nullptr ||
         !factorization->OperatorDomainMap().SameAs(crs.RowMap()))

@@ -20,15 +20,19 @@ namespace ssc
    * thousands of iterations on it. Exact for the matrix it was computed
    * from; the symbolic analysis is kept while the sparsity pattern stays
    * the same. Krylov solvers that need a positive definite preconditioner
-   * (CG, the truncated CG of trust-region steps) cannot use it: GMRES can.
+   * (CG, the truncated CG of trust-region steps) can use it only where it
+   * has no negative pivot (then the matrix is positive definite): GMRES can
+   * always.
    *
-   * The factorisation needs the whole matrix on one process: one MPI rank.
+   * The factorisation is distributed over the processes of the matrix's
+   * communicator (MUMPS with distributed input): every process calls
+   * initialize() and applies the factor together.
    */
   class LdltPreconditioner : public TrilinosWrappers::PreconditionBase
   {
   public:
-    /// Factorises @p matrix (its upper triangle). Returns false, and keeps
-    /// no factor, if MUMPS finds the matrix numerically singular.
+    /// Factorises @p matrix (its upper triangle; collective). Returns false,
+    /// and keeps no factor, if MUMPS finds the matrix numerically singular.
     bool
     initialize(const TrilinosWrappers::SparseMatrix &matrix);
 

@@ -65,14 +65,21 @@ namespace ssc
     ~LinearSolver();
 
     /// Builds the preconditioner for @p matrix: with Preconditioner =
-    /// cholesky its Cholesky factor, or, if it is not positive definite,
-    /// its L D L^T factor where @p allow_indefinite (GMRES then solves) and
-    /// AMG otherwise; the AMG hierarchy with Preconditioner = amg.
+    /// cholesky its Cholesky factor, with ldlt its distributed L D L^T
+    /// factor; if it is not positive definite, its L D L^T factor where
+    /// @p allow_indefinite (GMRES then solves) and AMG otherwise; the AMG
+    /// hierarchy with Preconditioner = amg.
     void
     setup_preconditioner(const TrilinosWrappers::SparseMatrix &matrix,
                          const bool allow_indefinite = true);
 
-    /// How many Cholesky factorisations were computed so far.
+    /// The method and preconditioner as the parameters name them, e.g.
+    /// "cg + ldlt" (summary.json).
+    std::string
+    preconditioner_name() const;
+
+    /// How many factorisations of positive definite tangents were computed
+    /// so far.
     unsigned int
     factorizations() const
     {
@@ -142,6 +149,14 @@ namespace ssc
     const TrilinosWrappers::PreconditionBase &
     active_preconditioner() const;
 
+    /// Counts an L D L^T factor of an indefinite tangent and says so.
+    void
+    report_indefinite_factor();
+
+    /// Says that AMG preconditions a tangent that was to be factorised.
+    void
+    report_amg_instead() const;
+
     /// CG on @p matrix x = @p rhs from @p x to @p control, GMRES where CG
     /// breaks down (an indefinite tangent); NoConvergence at the limit.
     void
@@ -177,8 +192,8 @@ namespace ssc
     /// factorised only with Preconditioner = cholesky; while it holds a
     /// factor, that factor is the active preconditioner
     CholeskyPreconditioner cholesky;
-    /// the factor of a tangent that is not positive definite, with
-    /// Preconditioner = cholesky; active while it holds a factor
+    /// every factor with Preconditioner = ldlt; with cholesky, the factor of
+    /// a tangent that is not positive definite; active while it holds one
     LdltPreconditioner                  ldlt;
     unsigned int                        n_factorizations            = 0;
     unsigned int                        n_indefinite_factorizations = 0;

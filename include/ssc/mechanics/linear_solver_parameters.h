@@ -33,14 +33,16 @@ namespace ssc
   enum class DisplacementPreconditioner
   {
     amg,
-    cholesky
+    cholesky,
+    ldlt
   };
 
-  constexpr std::array<std::pair<DisplacementPreconditioner, const char *>, 2>
+  constexpr std::array<std::pair<DisplacementPreconditioner, const char *>, 3>
   enum_table(DisplacementPreconditioner)
   {
     return {{{DisplacementPreconditioner::amg, "amg"},
-             {DisplacementPreconditioner::cholesky, "cholesky"}}};
+             {DisplacementPreconditioner::cholesky, "cholesky"},
+             {DisplacementPreconditioner::ldlt, "ldlt"}}};
   }
 
   /// Krylov solver and Trilinos ML smoothed-aggregation AMG (section
