@@ -126,8 +126,9 @@ case "${1:-run}" in
       prm="$MAIN_SCENE"
     fi
     # one MPI rank per core unless SSC_RANKS says otherwise; a scene that
-    # factorises its tangents (Preconditioner = cholesky) runs on one rank,
-    # its cell loops on threads on the cores the ranks leave free
+    # factorises its tangents on one process (Preconditioner = cholesky)
+    # runs on one rank, its cell loops on threads on the cores the ranks
+    # leave free; ldlt, the factor distributed over the ranks, takes them all
     if [ -z "${SSC_RANKS:-}" ]; then
       override=$(direct_factor_override "$@")
       if [ "$override" = cholesky ] ||
