@@ -7,8 +7,9 @@ import json
 import math
 import sys
 
-RUN_SPECIFIC = {"timings", "memory_MB", "memory_at_start_MB", "run",
-                "wall_time_per_step", "clip_seconds"}
+RUN_SPECIFIC = {"timings", "memory_MB", "memory_at_start_MB",
+                "memory_per_dof_kB", "run", "wall_time_per_step",
+                "clip_seconds"}
 
 
 def compare(a, b, path):
