@@ -179,6 +179,16 @@ def read_table(folder, name="force_displacement.csv"):
         return list(csv.DictReader(f))
 
 
+def write_rows(path, rows):
+    """Writes rows (dicts with the same keys, in the order of the first)
+    as a CSV file with a header line, and says so."""
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    print("wrote", os.path.relpath(path, ROOT))
+
+
 def keep(folder, destination, files=("summary.json",)):
     """Copies the named files of a run's folder into destination (created
     if missing), e.g. into a study's results/runs/<case>/."""

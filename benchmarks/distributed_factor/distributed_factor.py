@@ -100,11 +100,7 @@ def main():
             rows.append(row)
             print(", ".join(f"{k} {v}" for k, v in row.items()), flush=True)
 
-    with open(path, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
-    print("wrote", path)
+    ssc_runner.write_rows(path, rows)
     plot(rows)
 
 

@@ -66,11 +66,7 @@ def measure():
                 row[f"depth_mm_at_{f:g}N"] = d
             rows.append(row)
             print(", ".join(f"{k} {v}" for k, v in row.items()), flush=True)
-    with open(CSV, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    print("wrote", os.path.relpath(CSV, ROOT))
+    ssc_runner.write_rows(CSV, rows)
 
 
 def plot():
