@@ -5,7 +5,9 @@
 // (Sylvester's law of inertia), and applying it solves the system;
 // refactorising a matrix of the same pattern (the symbolic analysis
 // reused) and of a new pattern gives the new solution. The rows are split
-// evenly over the ranks: the .mpirun=2 variant gives the same lines.
+// evenly over the ranks: the .mpirun=2 variant gives the same lines. The
+// Cholesky factor (one process: the matrix on rank 0 alone) refuses the
+// indefinite matrices.
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
@@ -17,6 +19,7 @@
 
 #include <cmath>
 
+#include <ssc/linear_algebra/cholesky_preconditioner.h>
 #include <ssc/linear_algebra/ldlt_preconditioner.h>
 
 #include "tests.h"
@@ -30,7 +33,8 @@ namespace
   TrilinosWrappers::SparseMatrix
   shifted_laplacian(const unsigned int n,
                     const double       shift,
-                    const double       corner)
+                    const double       corner,
+                    const MPI_Comm     communicator = MPI_COMM_WORLD)
   {
     DynamicSparsityPattern pattern(n, n);
     for (unsigned int i = 0; i < n; ++i)
@@ -42,11 +46,11 @@ namespace
         pattern.add(n - 1, 0);
       }
     const IndexSet rows = Utilities::create_evenly_distributed_partitioning(
-      Utilities::MPI::this_mpi_process(MPI_COMM_WORLD),
-      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+      Utilities::MPI::this_mpi_process(communicator),
+      Utilities::MPI::n_mpi_processes(communicator),
       n);
     TrilinosWrappers::SparseMatrix matrix;
-    matrix.reinit(rows, rows, pattern, MPI_COMM_WORLD);
+    matrix.reinit(rows, rows, pattern, communicator);
     for (const auto i : rows)
       {
         matrix.set(i, i, 2. - shift);
@@ -96,11 +100,22 @@ main(int argc, char **argv)
       for (unsigned int k = 1; k <= n; ++k)
         if (2. - 2. * std::cos(k * numbers::PI / (n + 1)) - shift < 0)
           ++negative;
+      bool cholesky_accepts = false;
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          ssc::CholeskyPreconditioner cholesky;
+          cholesky_accepts =
+            cholesky.initialize(shifted_laplacian(n, shift, 0., MPI_COMM_SELF));
+        }
+      cholesky_accepts =
+        Utilities::MPI::broadcast(MPI_COMM_WORLD, cholesky_accepts, 0);
       const bool factorized = factor.initialize(matrix);
       deallog << "shift " << shift << ": " << negative
-              << " negative eigenvalues; L D L^T factorised: "
-              << (factorized ? "yes" : "no") << ", negative pivots "
-              << factor.negative_pivots() << ", solves to 1e-10: "
+              << " negative eigenvalues; Cholesky accepts it: "
+              << (cholesky_accepts ? "yes" : "no")
+              << "; L D L^T factorised: " << (factorized ? "yes" : "no")
+              << ", negative pivots " << factor.negative_pivots()
+              << ", solves to 1e-10: "
               << (relative_residual(matrix, factor) < 1e-10 ? "yes" : "no")
               << std::endl;
     }
