@@ -141,44 +141,37 @@ namespace ssc
     const TrilinosWrappers::SparseMatrix &matrix,
     const bool                            allow_indefinite)
   {
-    // a failed factorisation keeps no factor, a successful one drops the
-    // other kind: the factor that is left, or else AMG, is the active one
-    if (parameters.preconditioner == DisplacementPreconditioner::ldlt)
+    if (parameters.preconditioner == DisplacementPreconditioner::amg)
       {
-        if (ldlt.initialize(matrix))
-          {
-            if (ldlt.negative_pivots() == 0)
-              {
-                ++n_factorizations;
-                return;
-              }
-            if (allow_indefinite && parameters.factor_indefinite)
-              {
-                report_indefinite_factor();
-                return;
-              }
-          }
-        ldlt.clear();
-        report_amg_instead();
         setup_amg(matrix);
         return;
       }
-    ldlt.clear();
-    if (parameters.preconditioner == DisplacementPreconditioner::cholesky)
+    // With ldlt one factorisation tells both: the L D L^T factor is
+    // positive definite where it has no negative pivot, and is kept as the
+    // indefinite factor otherwise. With cholesky a failed Cholesky
+    // factorisation is followed by an L D L^T one. A failed factorisation
+    // keeps no factor, a successful one drops the other kind: the factor
+    // that is left, or else AMG, is the active one.
+    const bool distributed =
+      parameters.preconditioner == DisplacementPreconditioner::ldlt;
+    if (!distributed)
+      ldlt.clear();
+    const bool positive_definite =
+      distributed ? ldlt.initialize(matrix) && ldlt.negative_pivots() == 0 :
+                    cholesky.initialize(matrix);
+    if (positive_definite)
       {
-        if (cholesky.initialize(matrix))
-          {
-            ++n_factorizations;
-            return;
-          }
-        if (allow_indefinite && parameters.factor_indefinite &&
-            ldlt.initialize(matrix))
-          {
-            report_indefinite_factor();
-            return;
-          }
-        report_amg_instead();
+        ++n_factorizations;
+        return;
       }
+    if (allow_indefinite && parameters.factor_indefinite &&
+        (distributed ? ldlt.factorized() : ldlt.initialize(matrix)))
+      {
+        report_indefinite_factor();
+        return;
+      }
+    ldlt.clear();
+    report_amg_instead();
     setup_amg(matrix);
   }
 

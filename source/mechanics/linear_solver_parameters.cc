@@ -56,8 +56,8 @@ namespace ssc
       refactorization_iterations,
       "With Preconditioner = cholesky or ldlt: a solve preconditioned by "
       "the factor of an earlier matrix stops after this many iterations, "
-      "the current "
-      "matrix is factorised and the solve continues with the new factor.",
+      "the current matrix is factorised and the solve continues with the "
+      "new factor.",
       Patterns::Integer(1, 10000));
     prm.add_parameter("Tolerance",
                       tolerance,
