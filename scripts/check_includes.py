@@ -13,8 +13,8 @@ import re
 import sys
 
 LAYERS = ["base", "mesh", "microstructure", "embedding", "materials",
-          "linear_algebra", "mechanics", "contact", "nonlinear", "output",
-          "scenes", "identification"]
+          "linear_algebra", "multigrid", "mechanics", "contact", "nonlinear",
+          "output", "scenes", "identification"]
 APPLICATION = len(LAYERS)
 INCLUDE = re.compile(r'^\s*#\s*include\s*<ssc/([^>]+)>')
 
