@@ -120,11 +120,19 @@ namespace ssc
     , field(field)
     , constraints(constraints)
     , progress(progress)
+    , gmg(field.dof_handler())
   {
     // refused before any work is done, not at the first solve
     if (parameters.preconditioner == DisplacementPreconditioner::cholesky)
       CholeskyPreconditioner::require_one_process(
         field.dof_handler().get_communicator());
+    if (parameters.preconditioner == DisplacementPreconditioner::gmg)
+      {
+        GeometricMultigridPreconditioner::require_one_process(
+          field.dof_handler().get_communicator());
+        GeometricMultigridPreconditioner::require_uniform_refinements(
+          field.dof_handler().get_triangulation());
+      }
   }
 
 
@@ -143,6 +151,17 @@ namespace ssc
   {
     if (parameters.preconditioner == DisplacementPreconditioner::amg)
       {
+        setup_amg(matrix);
+        return;
+      }
+    if (parameters.preconditioner == DisplacementPreconditioner::gmg)
+      {
+        if (gmg.initialize(matrix, constraints.homogeneous()))
+          return;
+        if (progress != nullptr)
+          *progress << "  The tangent is not positive definite on a line "
+                       "of the mesh: AMG instead of the V-cycle"
+                    << std::endl;
         setup_amg(matrix);
         return;
       }
@@ -212,6 +231,8 @@ namespace ssc
       return cholesky;
     if (ldlt.factorized())
       return ldlt;
+    if (gmg.initialized())
+      return gmg;
     return amg;
   }
 

@@ -44,7 +44,15 @@ namespace ssc
       "tells whether the tangent is positive definite): the same answers "
       "on any number of ranks, each rank holding part of the factor; on a "
       "2-core machine no faster than cholesky on one rank "
-      "(benchmarks/distributed_factor).");
+      "(benchmarks/distributed_factor). gmg: a geometric multigrid V-cycle "
+      "on the mesh's refinement levels (Mesh/Global refinements >= 1, no "
+      "local refinement), Galerkin level matrices of the tangent (septa, "
+      "ligaments and contact included), Chebyshev smoothing on the "
+      "vertical line blocks (robust to the thin layers' flat cells) and a "
+      "direct solve on the coarse mesh: CG iterations nearly independent "
+      "of the refinement, memory and time linear in the DoFs; one MPI rank "
+      "for now (benchmarks/multigrid_layered). A tangent whose line blocks "
+      "are not positive definite gets amg.");
     prm.add_parameter(
       "Factor indefinite tangents",
       factor_indefinite,

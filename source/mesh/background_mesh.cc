@@ -55,12 +55,17 @@ namespace ssc
   BackgroundMesh::BackgroundMesh(const LayerStack     &layers,
                                  const MeshParameters &parameters,
                                  const MPI_Comm        mpi_communicator,
-                                 const ResourceLimits &limits)
+                                 const ResourceLimits &limits,
+                                 const bool            multigrid_levels)
     : layers(layers)
     , parameters(parameters)
     , limits(limits)
     , tria(mpi_communicator,
-           Triangulation<3>::limit_level_difference_at_vertices)
+           Triangulation<3>::limit_level_difference_at_vertices,
+           multigrid_levels ?
+             parallel::distributed::Triangulation<
+               3>::construct_multigrid_hierarchy :
+             parallel::distributed::Triangulation<3>::default_setting)
   {}
 
 

@@ -18,10 +18,13 @@ namespace ssc
                                  ConditionalOStream &pcout,
                                  ConditionalOStream &timed_pcout)
   {
-    background_mesh = std::make_unique<BackgroundMesh>(parameters.layers,
-                                                       parameters.mesh,
-                                                       mpi_communicator,
-                                                       parameters.limits);
+    background_mesh = std::make_unique<BackgroundMesh>(
+      parameters.layers,
+      parameters.mesh,
+      mpi_communicator,
+      parameters.limits,
+      parameters.elasticity.linear_solver.preconditioner ==
+        DisplacementPreconditioner::gmg);
     {
       TimerOutput::Scope t(timer, "mesh");
       background_mesh->build();

@@ -19,6 +19,7 @@
 #include <ssc/mechanics/displacement_field.h>
 #include <ssc/mechanics/linear_solver_parameters.h>
 #include <ssc/mechanics/pressure_system.h>
+#include <ssc/multigrid/geometric_multigrid_preconditioner.h>
 
 class Epetra_MultiVector;
 
@@ -68,7 +69,8 @@ namespace ssc
     /// cholesky its Cholesky factor, with ldlt its distributed L D L^T
     /// factor; if it is not positive definite, its L D L^T factor where
     /// @p allow_indefinite (GMRES then solves) and AMG otherwise; the AMG
-    /// hierarchy with Preconditioner = amg.
+    /// hierarchy with Preconditioner = amg; with gmg the V-cycle, or AMG
+    /// where a line block is not positive definite.
     void
     setup_preconditioner(const TrilinosWrappers::SparseMatrix &matrix,
                          const bool allow_indefinite = true);
@@ -194,7 +196,9 @@ namespace ssc
     CholeskyPreconditioner cholesky;
     /// every factor with Preconditioner = ldlt; with cholesky, the factor of
     /// a tangent that is not positive definite; active while it holds one
-    LdltPreconditioner                  ldlt;
+    LdltPreconditioner ldlt;
+    /// the V-cycle with Preconditioner = gmg; active while it holds one
+    GeometricMultigridPreconditioner    gmg;
     unsigned int                        n_factorizations            = 0;
     unsigned int                        n_indefinite_factorizations = 0;
     std::unique_ptr<Epetra_MultiVector> near_null_space;

@@ -34,15 +34,17 @@ namespace ssc
   {
     amg,
     cholesky,
-    ldlt
+    ldlt,
+    gmg
   };
 
-  constexpr std::array<std::pair<DisplacementPreconditioner, const char *>, 3>
+  constexpr std::array<std::pair<DisplacementPreconditioner, const char *>, 4>
   enum_table(DisplacementPreconditioner)
   {
     return {{{DisplacementPreconditioner::amg, "amg"},
              {DisplacementPreconditioner::cholesky, "cholesky"},
-             {DisplacementPreconditioner::ldlt, "ldlt"}}};
+             {DisplacementPreconditioner::ldlt, "ldlt"},
+             {DisplacementPreconditioner::gmg, "gmg"}}};
   }
 
   /// Krylov solver and Trilinos ML smoothed-aggregation AMG (section

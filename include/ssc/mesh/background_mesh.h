@@ -32,11 +32,15 @@ namespace ssc
   {
   public:
     /// The mesh of @p layers as @p parameters say, refused beyond the
-    /// cell count of @p limits.
+    /// cell count of @p limits. With @p multigrid_levels, p4est keeps the
+    /// refinement levels on every rank (the geometric multigrid
+    /// preconditioner needs them; they cost level ghost cells and change
+    /// the partition's constraints, so only then).
     BackgroundMesh(const LayerStack     &layers,
                    const MeshParameters &parameters,
                    const MPI_Comm        mpi_communicator,
-                   const ResourceLimits &limits = ResourceLimits());
+                   const ResourceLimits &limits           = ResourceLimits(),
+                   const bool            multigrid_levels = false);
 
     /// Builds the coarse mesh and applies global and local refinement;
     /// throws, naming the parameter, if a layer's thickness is out of
