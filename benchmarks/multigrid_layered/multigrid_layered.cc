@@ -13,13 +13,20 @@
 //  - gmg: a V-cycle, Chebyshev(degree 4) smoothing on the point-Jacobi
 //    preconditioned level matrices (assembled on every level, the layers'
 //    moduli inherited by the children), UMFPACK on the coarse level;
+//  - gmg-line: the same V-cycle with Chebyshev on the exact inverse of each
+//    level's vertical line blocks (ssc::LineBlockPreconditioner);
+//  - gmg-line-galerkin: gmg-line with Galerkin level matrices P^T A P
+//    (ssc::make_galerkin_hierarchy) below the finest;
 //  - amg: Trilinos ML smoothed aggregation with the three translation
-//    modes (ssc's cg option, without the rotations).
-// Prints one CSV line per case.
+//    modes (ssc's cg option, without the rotations); amg-line: the same
+//    with ML's line Jacobi smoother;
+//  - cholesky: ssc's CHOLMOD factor.
+// Prints one CSV line per case (resident memory after the solve last).
 //
-//   multigrid_layered [max refinements Q1] [max refinements Q2]
-//                     [lateral coarse cells n] [quick: nu 0.3, 1:60 only]
-//                     [Chebyshev degree] [equal: five 3.6 mm layers]
+//   multigrid_layered [q1=3] [q2=2] [n=6] [quick=0|1] [chebyshev=4]
+//                     [equal=0|1] [smoothers=point,line] [amg=1]
+//                     [amg-line=0] [cholesky=0] [galerkin=0]
+//                     [nu=0.3,0.45,0.49]
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -30,6 +37,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
@@ -55,7 +63,13 @@
 #include <deal.II/multigrid/multigrid.h>
 
 #include <iostream>
+#include <map>
 #include <string>
+
+#include <ssc/linear_algebra/cholesky_preconditioner.h>
+#include <ssc/linear_algebra/line_block_preconditioner.h>
+#include <ssc/multigrid/galerkin_hierarchy.h>
+#include <ssc/multigrid/vertical_lines.h>
 
 using namespace dealii;
 
@@ -74,6 +88,13 @@ namespace
     unsigned int smoother_degree;
     /// Five layers of equal thickness (3.6 mm) instead of punch.prm's.
     bool equal_layers;
+    /// Which preconditioners to run.
+    bool point_smoother;
+    bool line_smoother;
+    bool amg;
+    bool amg_line;
+    bool cholesky;
+    bool galerkin;
   };
 
   /// Layer thicknesses (mm, from the top) of prm/punch.prm, or five
@@ -92,6 +113,18 @@ namespace
   {
     return {0.02, 0.001, contrast > 100 ? 1.0 : 0.06, 0.001, 0.015};
   }
+
+  /// Resident memory of this process now (MB): the matrices and the
+  /// preconditioner of the case being solved, when one method runs per
+  /// process.
+  double
+  resident_memory_MB()
+  {
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    return memory.VmRSS / 1024.;
+  }
+
 
   /// The exact inverse of the coarse level's matrix.
   class DirectCoarse : public MGCoarseGridBase<Vector<double>>
@@ -137,11 +170,36 @@ namespace
     void
     assemble_levels();
 
+    /// A V-cycle with Chebyshev smoothing on the level preconditioners
+    /// that @p make_preconditioner (level) returns.
+    template <typename LevelPreconditioner, typename MakePreconditioner>
     void
-    solve_gmg();
+    solve_gmg(const std::string        &method,
+              const MakePreconditioner &make_preconditioner);
 
+    /// gmg: point Jacobi inside Chebyshev.
     void
-    solve_amg();
+    solve_gmg_point();
+
+    /// gmg-line: the vertical line blocks inside Chebyshev.
+    void
+    solve_gmg_line(const std::string &method = "gmg-line");
+
+    /// Replaces the level matrices below the finest by Galerkin products
+    /// P^T A P of the finer level's (what ssc needs: its septa, ligaments
+    /// and contact are in the fine matrix only); Dirichlet DoFs are kept
+    /// out of the transfer, their coarse rows are the identity.
+    void
+    make_galerkin_levels();
+
+    /// ssc's sparse Cholesky factor (CHOLMOD): the scenes' fast path.
+    void
+    solve_cholesky();
+
+    /// ML's smoothed aggregation, with its point smoother or with its
+    /// line smoother on lines detected from the coordinates.
+    void
+    solve_amg(bool line_smoother);
 
     /// CG on the system with @p preconditioner, at most
     /// @p max_iterations (the count reported if it does not converge), and
@@ -157,9 +215,12 @@ namespace
     const Case          c;
     std::vector<double> thicknesses, lambda, mu;
 
-    Triangulation<dim>        tria;
-    FESystem<dim>             fe;
-    DoFHandler<dim>           dof_handler;
+    Triangulation<dim> tria;
+    FESystem<dim>      fe;
+    DoFHandler<dim>    dof_handler;
+    /// Reused by every cell_system() call.
+    mutable FEValues<dim>     fe_values;
+    mutable FEFaceValues<dim> face_values;
     AffineConstraints<double> constraints;
     SparsityPattern           sparsity;
     SparseMatrix<double>      matrix;
@@ -168,6 +229,12 @@ namespace
     MGConstrainedDoFs                   mg_constrained_dofs;
     MGLevelObject<SparsityPattern>      mg_sparsity;
     MGLevelObject<SparseMatrix<double>> mg_matrices;
+    /// Wall time of the level matrices' assembly (s), part of every
+    /// V-cycle's set-up.
+    double level_setup = 0;
+    /// The same for the finest level alone (the Galerkin hierarchy
+    /// assembles only it).
+    double finest_level_setup = 0;
   };
 
 
@@ -177,6 +244,12 @@ namespace
     , tria(Triangulation<dim>::limit_level_difference_at_vertices)
     , fe(FE_Q<dim>(c.degree), dim)
     , dof_handler(tria)
+    , fe_values(fe,
+                QGauss<dim>(c.degree + 1),
+                update_gradients | update_JxW_values)
+    , face_values(fe,
+                  QGauss<dim - 1>(c.degree + 1),
+                  update_values | update_quadrature_points | update_JxW_values)
   {
     for (const double E : moduli(c.contrast))
       {
@@ -213,16 +286,9 @@ namespace
                             FullMatrix<double> &cell_matrix,
                             Vector<double>     &cell_rhs) const
   {
-    const QGauss<dim>     quadrature(c.degree + 1);
-    const QGauss<dim - 1> face_quadrature(c.degree + 1);
-    FEValues<dim>         fe_values(fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-    FEFaceValues<dim>     face_values(fe,
-                                  face_quadrature,
-                                  update_values | update_quadrature_points |
-                                    update_JxW_values);
-    const unsigned int    n = fe.n_dofs_per_cell();
+    const Quadrature<dim>     &quadrature      = fe_values.get_quadrature();
+    const Quadrature<dim - 1> &face_quadrature = face_values.get_quadrature();
+    const unsigned int         n               = fe.n_dofs_per_cell();
     cell_matrix.reinit(n, n);
     cell_rhs.reinit(n);
     fe_values.reinit(cell);
@@ -291,6 +357,7 @@ namespace
   void
   LayeredPunch::assemble_levels()
   {
+    Timer timer;
     dof_handler.distribute_mg_dofs();
     mg_constrained_dofs.initialize(dof_handler);
     mg_constrained_dofs.make_zero_boundary_constraints(dof_handler, {4});
@@ -309,6 +376,7 @@ namespace
         AffineConstraints<double> boundary;
         boundary.add_lines(mg_constrained_dofs.get_boundary_indices(level));
         boundary.close();
+        Timer level_timer;
         for (const auto &cell : dof_handler.cell_iterators_on_level(level))
           {
             cell_system(cell, cell_matrix, cell_rhs);
@@ -317,7 +385,9 @@ namespace
                                                 indices,
                                                 mg_matrices[level]);
           }
+        finest_level_setup = level_timer.wall_time();
       }
+    level_setup = timer.wall_time();
   }
 
 
@@ -345,34 +415,33 @@ namespace
               << c.contrast << ',' << c.lateral_cells << ','
               << c.smoother_degree << ',' << c.equal_layers << ','
               << dof_handler.n_dofs() << ',' << method << ',' << iterations
-              << ',' << setup << ',' << timer.wall_time() << std::endl;
+              << ',' << setup << ',' << timer.wall_time() << ','
+              << resident_memory_MB() << std::endl;
   }
 
 
+  template <typename LevelPreconditioner, typename MakePreconditioner>
   void
-  LayeredPunch::solve_gmg()
+  LayeredPunch::solve_gmg(const std::string        &method,
+                          const MakePreconditioner &make_preconditioner)
   {
-    Timer timer;
-    assemble_levels();
+    Timer                              timer;
     MGTransferPrebuilt<Vector<double>> transfer(mg_constrained_dofs);
     transfer.build(dof_handler);
     DirectCoarse coarse;
     coarse.initialize(mg_matrices[0]);
-    using Smoother =
-      PreconditionChebyshev<SparseMatrix<double>, Vector<double>>;
+    using Smoother = PreconditionChebyshev<SparseMatrix<double>,
+                                           Vector<double>,
+                                           LevelPreconditioner>;
     mg::SmootherRelaxation<Smoother, Vector<double>> smoother;
-    MGLevelObject<Smoother::AdditionalData>          smoother_data(0,
-                                                          tria.n_levels() - 1);
+    MGLevelObject<typename Smoother::AdditionalData> smoother_data(
+      0, tria.n_levels() - 1);
     for (unsigned int level = 0; level < tria.n_levels(); ++level)
       {
         smoother_data[level].smoothing_range     = 15.;
         smoother_data[level].degree              = c.smoother_degree;
         smoother_data[level].eig_cg_n_iterations = 20;
-        auto diagonal = std::make_shared<DiagonalMatrix<Vector<double>>>();
-        diagonal->get_vector().reinit(dof_handler.n_dofs(level));
-        for (unsigned int i = 0; i < dof_handler.n_dofs(level); ++i)
-          diagonal->get_vector()(i) = 1. / mg_matrices[level].diag_element(i);
-        smoother_data[level].preconditioner = diagonal;
+        smoother_data[level].preconditioner      = make_preconditioner(level);
       }
     smoother.initialize(mg_matrices, smoother_data);
     mg::Matrix<Vector<double>> level_matrix(mg_matrices);
@@ -380,12 +449,52 @@ namespace
       level_matrix, coarse, transfer, smoother, smoother);
     PreconditionMG<dim, Vector<double>, MGTransferPrebuilt<Vector<double>>>
       preconditioner(dof_handler, mg, transfer);
-    solve_and_report("gmg", matrix, preconditioner, 1000, timer.wall_time());
+    solve_and_report(
+      method, matrix, preconditioner, 1000, level_setup + timer.wall_time());
   }
 
 
   void
-  LayeredPunch::solve_amg()
+  LayeredPunch::solve_gmg_point()
+  {
+    solve_gmg<DiagonalMatrix<Vector<double>>>("gmg", [&](unsigned int level) {
+      auto diagonal = std::make_shared<DiagonalMatrix<Vector<double>>>();
+      diagonal->get_vector().reinit(dof_handler.n_dofs(level));
+      for (unsigned int i = 0; i < dof_handler.n_dofs(level); ++i)
+        diagonal->get_vector()(i) = 1. / mg_matrices[level].diag_element(i);
+      return diagonal;
+    });
+  }
+
+
+  void
+  LayeredPunch::make_galerkin_levels()
+  {
+    Timer timer;
+    ssc::make_galerkin_hierarchy(dof_handler,
+                                 mg_constrained_dofs,
+                                 mg_sparsity,
+                                 mg_matrices);
+    level_setup = finest_level_setup + timer.wall_time();
+  }
+
+
+  void
+  LayeredPunch::solve_gmg_line(const std::string &method)
+  {
+    solve_gmg<ssc::LineBlockPreconditioner>(method, [&](unsigned int level) {
+      auto lines = std::make_shared<ssc::LineBlockPreconditioner>();
+      AssertThrow(
+        lines->initialize(mg_matrices[level],
+                          ssc::vertical_lines(dof_handler, level, 1e-6)),
+        ExcMessage("a line block is not positive definite"));
+      return lines;
+    });
+  }
+
+
+  void
+  LayeredPunch::solve_amg(const bool line_smoother)
   {
     Timer                          timer;
     TrilinosWrappers::SparseMatrix trilinos_matrix;
@@ -401,8 +510,52 @@ namespace
                                      modes);
     data.constant_modes = modes;
     TrilinosWrappers::PreconditionAMG amg;
-    amg.initialize(trilinos_matrix, data);
-    solve_and_report("amg", trilinos_matrix, amg, 2000, timer.wall_time());
+    if (!line_smoother)
+      {
+        amg.initialize(trilinos_matrix, data);
+        solve_and_report("amg", trilinos_matrix, amg, 2000, timer.wall_time());
+        return;
+      }
+    // ML's own line smoother: the lines are detected from the nodes'
+    // coordinates (neighbours much closer in z than laterally)
+    Teuchos::ParameterList              ml_list;
+    std::unique_ptr<Epetra_MultiVector> unused;
+    data.set_parameters(ml_list, unused, trilinos_matrix);
+    std::map<types::global_dof_index, Point<dim>> support;
+    DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                         dof_handler,
+                                         support);
+    const unsigned int  n_nodes = dof_handler.n_dofs() / dim;
+    std::vector<double> x(n_nodes), y(n_nodes), z(n_nodes);
+    for (unsigned int node = 0; node < n_nodes; ++node)
+      {
+        const Point<dim> &p = support.at(dim * node);
+        x[node] = p[0], y[node] = p[1], z[node] = p[2];
+      }
+    ml_list.set("PDE equations", 3);
+    // the best settings found by hand: at a detection threshold of 0.1
+    // the lines break in the thick layers, at damping 0.8 CG diverges
+    ml_list.set("smoother: type", "line Jacobi");
+    ml_list.set("smoother: line detection threshold", 0.5);
+    ml_list.set("smoother: damping factor", 0.5);
+    ml_list.set("x-coordinates", x.data());
+    ml_list.set("y-coordinates", y.data());
+    ml_list.set("z-coordinates", z.data());
+    amg.initialize(trilinos_matrix, ml_list);
+    solve_and_report("amg-line", trilinos_matrix, amg, 2000, timer.wall_time());
+  }
+
+
+  void
+  LayeredPunch::solve_cholesky()
+  {
+    Timer                          timer;
+    TrilinosWrappers::SparseMatrix trilinos_matrix;
+    trilinos_matrix.reinit(matrix);
+    ssc::CholeskyPreconditioner factor;
+    factor.initialize(trilinos_matrix);
+    solve_and_report(
+      "cholesky", trilinos_matrix, factor, 100, timer.wall_time());
   }
 
 
@@ -410,8 +563,25 @@ namespace
   LayeredPunch::run()
   {
     assemble_active();
-    solve_gmg();
-    solve_amg();
+    if (c.point_smoother || c.line_smoother)
+      assemble_levels();
+    if (c.point_smoother)
+      solve_gmg_point();
+    if (c.line_smoother)
+      solve_gmg_line();
+    if (c.amg)
+      solve_amg(false);
+    if (c.amg_line)
+      solve_amg(true);
+    if (c.cholesky)
+      solve_cholesky();
+    if (c.galerkin)
+      {
+        if (!(c.point_smoother || c.line_smoother))
+          assemble_levels();
+        make_galerkin_levels();
+        solve_gmg_line("gmg-line-galerkin");
+      }
   }
 } // namespace
 
@@ -419,23 +589,71 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int               max_q1  = argc > 1 ? std::stoi(argv[1]) : 3;
-  const unsigned int               max_q2  = argc > 2 ? std::stoi(argv[2]) : 2;
-  const unsigned int               lateral = argc > 3 ? std::stoi(argv[3]) : 6;
-  const bool         quick = argc > 4 && std::string(argv[4]) == "quick";
-  const unsigned int smoother_degree = argc > 5 ? std::stoi(argv[5]) : 4;
-  const bool         equal_layers = argc > 6 && std::string(argv[6]) == "equal";
+  Utilities::MPI::MPI_InitFinalize   mpi(argc, argv, 1);
+  std::map<std::string, std::string> options = {{"q1", "3"},
+                                                {"q2", "2"},
+                                                {"n", "6"},
+                                                {"quick", "0"},
+                                                {"chebyshev", "4"},
+                                                {"equal", "0"},
+                                                {"smoothers", "point"},
+                                                {"amg", "1"},
+                                                {"amg-line", "0"},
+                                                {"cholesky", "0"},
+                                                {"galerkin", "0"},
+                                                {"nu", "0.3,0.45,0.49"}};
+  for (int a = 1; a < argc; ++a)
+    {
+      const std::string argument(argv[a]);
+      const auto        equals = argument.find('=');
+      const std::string key    = argument.substr(0, equals);
+      if (options.count(key) == 0)
+        {
+          std::cerr << "multigrid_layered: unknown option '" << argument
+                    << "' (known: q1= q2= n= quick=0|1 chebyshev= equal=0|1 "
+                       "smoothers=point|line|point,line amg=0|1 amg-line=0|1 "
+                       "cholesky=0|1 galerkin=0|1 nu=0.3,0.45,...)"
+                    << std::endl;
+          return 1;
+        }
+      options[key] = argument.substr(equals + 1);
+    }
+  const unsigned int max_q1          = std::stoi(options["q1"]);
+  const unsigned int max_q2          = std::stoi(options["q2"]);
+  const unsigned int lateral         = std::stoi(options["n"]);
+  const bool         quick           = options["quick"] == "1";
+  const unsigned int smoother_degree = std::stoi(options["chebyshev"]);
+  const bool         equal_layers    = options["equal"] == "1";
+  const bool point    = options["smoothers"].find("point") != std::string::npos;
+  const bool line     = options["smoothers"].find("line") != std::string::npos;
+  const bool amg      = options["amg"] == "1";
+  const bool amg_line = options["amg-line"] == "1";
+  const bool cholesky = options["cholesky"] == "1";
+  const bool galerkin = options["galerkin"] == "1";
+  std::vector<double> nus;
+  for (const std::string &nu : Utilities::split_string_list(options["nu"]))
+    nus.push_back(std::stod(nu));
   std::cout << "degree,refinements,nu,contrast,lateral_cells,"
                "smoother_degree,equal_layers,dofs,method,iterations,"
-               "setup_s,solve_s"
+               "setup_s,solve_s,memory_MB"
             << std::endl;
   for (const double contrast : {60., 1000.})
-    for (const double nu : {0.3, 0.45, 0.49})
+    for (const double nu : nus)
       for (const unsigned int degree : {1u, 2u})
         for (unsigned int r = 1; r <= (degree == 1 ? max_q1 : max_q2); ++r)
           if (!quick || (contrast == 60. && nu == 0.3))
-            LayeredPunch(
-              {degree, r, nu, contrast, lateral, smoother_degree, equal_layers})
+            LayeredPunch({degree,
+                          r,
+                          nu,
+                          contrast,
+                          lateral,
+                          smoother_degree,
+                          equal_layers,
+                          point,
+                          line,
+                          amg,
+                          amg_line,
+                          cholesky,
+                          galerkin})
               .run();
 }
