@@ -46,7 +46,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -68,6 +67,7 @@
 
 #include <ssc/linear_algebra/cholesky_preconditioner.h>
 #include <ssc/linear_algebra/line_block_preconditioner.h>
+#include <ssc/multigrid/direct_coarse_solver.h>
 #include <ssc/multigrid/galerkin_hierarchy.h>
 #include <ssc/multigrid/vertical_lines.h>
 
@@ -124,29 +124,6 @@ namespace
     Utilities::System::get_memory_stats(memory);
     return memory.VmRSS / 1024.;
   }
-
-
-  /// The exact inverse of the coarse level's matrix.
-  class DirectCoarse : public MGCoarseGridBase<Vector<double>>
-  {
-  public:
-    void
-    initialize(const SparseMatrix<double> &matrix)
-    {
-      solver.initialize(matrix);
-    }
-
-    void
-    operator()(const unsigned int,
-               Vector<double>       &dst,
-               const Vector<double> &src) const override
-    {
-      solver.vmult(dst, src);
-    }
-
-  private:
-    SparseDirectUMFPACK solver;
-  };
 
 
   class LayeredPunch
@@ -428,7 +405,7 @@ namespace
     Timer                              timer;
     MGTransferPrebuilt<Vector<double>> transfer(mg_constrained_dofs);
     transfer.build(dof_handler);
-    DirectCoarse coarse;
+    ssc::DirectCoarseSolver coarse;
     coarse.initialize(mg_matrices[0]);
     using Smoother = PreconditionChebyshev<SparseMatrix<double>,
                                            Vector<double>,

@@ -4,7 +4,6 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/precondition.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -19,38 +18,13 @@
 
 #include <ssc/linear_algebra/factor_operator.h>
 #include <ssc/linear_algebra/line_block_preconditioner.h>
+#include <ssc/multigrid/direct_coarse_solver.h>
 #include <ssc/multigrid/galerkin_hierarchy.h>
 #include <ssc/multigrid/geometric_multigrid_preconditioner.h>
 #include <ssc/multigrid/vertical_lines.h>
 
 namespace ssc
 {
-  namespace
-  {
-    /// The exact inverse of the coarsest level's matrix.
-    class DirectCoarse : public MGCoarseGridBase<Vector<double>>
-    {
-    public:
-      void
-      initialize(const SparseMatrix<double> &matrix)
-      {
-        factor.initialize(matrix);
-      }
-
-      void
-      operator()(const unsigned int,
-                 Vector<double>       &dst,
-                 const Vector<double> &src) const override
-      {
-        factor.vmult(dst, src);
-      }
-
-    private:
-      SparseDirectUMFPACK factor;
-    };
-  } // namespace
-
-
   /**
    * The hierarchy and the V-cycle, as the Epetra operator CG applies. The
    * mesh's DoFs are numbered again here (with their level numbers); the
@@ -104,7 +78,7 @@ namespace ssc
     MGLevelObject<SparsityPattern>                   sparsity;
     MGLevelObject<SparseMatrix<double>>              matrices;
     MGTransferPrebuilt<Vector<double>>               transfer;
-    DirectCoarse                                     coarse;
+    DirectCoarseSolver                               coarse;
     mg::SmootherRelaxation<Smoother, Vector<double>> smoother;
     mg::Matrix<Vector<double>>                       level_matrices;
     std::unique_ptr<Multigrid<Vector<double>>>       multigrid;
