@@ -102,9 +102,16 @@ main(int argc, char **argv)
                               assembled_sparsity[level],
                               assembled[level]);
         }
-      galerkin_sparsity[finest].copy_from(assembled_sparsity[finest]);
-      galerkin[finest].reinit(galerkin_sparsity[finest]);
-      galerkin[finest].copy_from(assembled[finest]);
+      {
+        AffineConstraints<double> boundary;
+        boundary.add_lines(constrained_dofs.get_boundary_indices(finest));
+        boundary.close();
+        make_layered_matrix(dof_handler,
+                            finest,
+                            boundary,
+                            galerkin_sparsity[finest],
+                            galerkin[finest]);
+      }
       ssc::make_galerkin_hierarchy(dof_handler,
                                    constrained_dofs,
                                    galerkin_sparsity,

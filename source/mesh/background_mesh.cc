@@ -60,8 +60,13 @@ namespace ssc
     : layers(layers)
     , parameters(parameters)
     , limits(limits)
+    // multigrid needs the level difference limited at vertices; the other
+    // meshes keep deal.II's default smoothing (copy_triangulation() in
+    // build() takes the coarse mesh's, which is this one)
     , tria(mpi_communicator,
-           Triangulation<3>::limit_level_difference_at_vertices,
+           multigrid_levels ?
+             Triangulation<3>::limit_level_difference_at_vertices :
+             Triangulation<3>::none,
            multigrid_levels ?
              parallel::distributed::Triangulation<
                3>::construct_multigrid_hierarchy :
@@ -226,7 +231,7 @@ namespace ssc
 
     const std::vector<double> z_steps = vertical_steps(layers, parameters);
 
-    Triangulation<3> coarse;
+    Triangulation<3> coarse(tria.get_mesh_smoothing());
     if (parameters.layout == MeshLayout::box)
       {
         const std::vector<std::vector<double>> steps = {
