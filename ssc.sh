@@ -64,11 +64,10 @@ build() {
 }
 
 # uses_direct_factor FILE.prm: whether FILE or a file it includes sets
-# "Preconditioner = cholesky" (a serial factorisation) or "gmg" (serial
-# level matrices): one MPI rank
+# "Preconditioner = cholesky" (a serial factorisation): one MPI rank
 uses_direct_factor() {
   local file="$1" included
-  grep -qiE '^[[:space:]]*set[[:space:]]+Preconditioner[[:space:]]*=[[:space:]]*(cholesky|gmg)' "$file" &&
+  grep -qiE '^[[:space:]]*set[[:space:]]+Preconditioner[[:space:]]*=[[:space:]]*cholesky' "$file" &&
     return 0
   for included in $(sed -nE 's/^[[:space:]]*include[[:space:]]+([^[:space:]#]+).*/\1/p' "$file"); do
     uses_direct_factor "$(dirname "$file")/$included" && return 0
@@ -127,13 +126,13 @@ case "${1:-run}" in
       prm="$MAIN_SCENE"
     fi
     # one MPI rank per core unless SSC_RANKS says otherwise; a scene that
-    # factorises its tangents on one process (Preconditioner = cholesky) or
-    # builds its multigrid levels there (gmg) runs on one rank, its cell
-    # loops on threads on the cores the ranks leave free; ldlt, the factor
-    # distributed over the ranks, takes them all
+    # factorises its tangents on one process (Preconditioner = cholesky)
+    # runs on one rank, its cell loops on threads on the cores the ranks
+    # leave free; ldlt (the factor distributed over the ranks) and gmg (the
+    # distributed V-cycle) take them all
     if [ -z "${SSC_RANKS:-}" ]; then
       override=$(direct_factor_override "$@")
-      if [ "$override" = cholesky ] || [ "$override" = gmg ] ||
+      if [ "$override" = cholesky ] ||
          { [ -z "$override" ] && uses_direct_factor "$prm"; }; then
         RANKS=1
       fi

@@ -127,12 +127,8 @@ namespace ssc
       CholeskyPreconditioner::require_one_process(
         field.dof_handler().get_communicator());
     if (parameters.preconditioner == DisplacementPreconditioner::gmg)
-      {
-        GeometricMultigridPreconditioner::require_one_process(
-          field.dof_handler().get_communicator());
-        GeometricMultigridPreconditioner::require_uniform_refinements(
-          field.dof_handler().get_triangulation());
-      }
+      GeometricMultigridPreconditioner::require_uniform_refinements(
+        field.dof_handler().get_triangulation());
   }
 
 

@@ -50,9 +50,10 @@ namespace ssc
       "ligaments and contact included), Chebyshev smoothing on the "
       "vertical line blocks (robust to the thin layers' flat cells) and a "
       "direct solve on the coarse mesh: CG iterations nearly independent "
-      "of the refinement, memory and time linear in the DoFs; one MPI rank "
-      "for now (benchmarks/multigrid_layered). A tangent whose line blocks "
-      "are not positive definite gets amg.");
+      "of the refinement, memory and time linear in the DoFs, on any "
+      "number of MPI ranks with the same iterations "
+      "(benchmarks/multigrid_layered). A tangent whose line blocks are not "
+      "positive definite gets amg.");
     prm.add_parameter(
       "Factor indefinite tangents",
       factor_indefinite,

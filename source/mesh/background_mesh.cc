@@ -60,6 +60,7 @@ namespace ssc
     : layers(layers)
     , parameters(parameters)
     , limits(limits)
+    , multigrid_levels(multigrid_levels)
     // multigrid needs the level difference limited at vertices; the other
     // meshes keep deal.II's default smoothing (copy_triangulation() in
     // build() takes the coarse mesh's, which is this one)
@@ -272,6 +273,8 @@ namespace ssc
     for (const Point<3> &p : coarse.get_vertices())
       layers.check_thickness_at(p[0], p[1]);
 
+    if (multigrid_levels)
+      order_columns(coarse);
     tria.copy_triangulation(coarse);
     tria.set_manifold(0, layer_map);
     if (parameters.layout == MeshLayout::o_grid)
@@ -281,6 +284,40 @@ namespace ssc
     check_thickness_at_vertices();
     if (parameters.fitted_circle_radius > 0)
       check_fitted_circle();
+  }
+
+
+  void
+  BackgroundMesh::order_columns(Triangulation<3> &coarse)
+  {
+    auto [vertices, cells, faces] =
+      GridTools::get_coarse_mesh_description(coarse);
+    std::vector<Point<3>> centres;
+    for (const auto &cell : cells)
+      {
+        Point<3> centre;
+        for (const unsigned int v : cell.vertices)
+          centre += vertices[v] / static_cast<double>(cell.vertices.size());
+        centres.push_back(centre);
+      }
+    // lateral positions equal to a thousandth of the smallest cell
+    const double tolerance = 1e-3 * GridTools::minimal_cell_diameter(coarse);
+    std::vector<unsigned int> order(cells.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(
+      order.begin(), order.end(), [&](const auto a, const auto b) {
+        for (const unsigned int d : {0u, 1u})
+          if (std::abs(centres[a][d] - centres[b][d]) > tolerance)
+            return centres[a][d] < centres[b][d];
+        return centres[a][2] < centres[b][2];
+      });
+    std::vector<CellData<3>> ordered;
+    for (const unsigned int k : order)
+      ordered.push_back(cells[k]);
+    const auto smoothing = coarse.get_mesh_smoothing();
+    coarse.clear();
+    coarse.set_mesh_smoothing(smoothing);
+    coarse.create_triangulation(vertices, ordered, faces);
   }
 
 

@@ -1,34 +1,105 @@
-#include <deal.II/base/mg_level_object.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/subscriptor.h>
 
 #include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/precondition.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/vector.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
-#include <deal.II/multigrid/mg_coarse.h>
-#include <deal.II/multigrid/mg_constrained_dofs.h>
-#include <deal.II/multigrid/mg_matrix.h>
-#include <deal.II/multigrid/mg_smoother.h>
-#include <deal.II/multigrid/mg_transfer.h>
-#include <deal.II/multigrid/multigrid.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
 
 #include <ssc/linear_algebra/factor_operator.h>
-#include <ssc/linear_algebra/line_block_preconditioner.h>
-#include <ssc/multigrid/direct_coarse_solver.h>
+#include <ssc/multigrid/distributed_line_blocks.h>
 #include <ssc/multigrid/galerkin_hierarchy.h>
 #include <ssc/multigrid/geometric_multigrid_preconditioner.h>
 #include <ssc/multigrid/vertical_lines.h>
 
 namespace ssc
 {
+  namespace
+  {
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
+    /**
+     * A distributed matrix as the Chebyshev smoother sees it: Epetra's
+     * product, without a copy (the smoother keeps a pointer to its
+     * matrix, which deal.II wants to be a Subscriptor; the finest level's
+     * matrix is the caller's tangent).
+     */
+    class EpetraMatrixView : public Subscriptor
+    {
+    public:
+      explicit EpetraMatrixView(const Epetra_CrsMatrix &matrix)
+        : matrix(&matrix)
+      {}
+
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        const int error =
+          matrix->Multiply(false, src.trilinos_vector(), dst.trilinos_vector());
+        AssertThrow(error == 0, ExcMessage("Epetra's matrix product failed."));
+      }
+
+      types::global_dof_index
+      m() const
+      {
+        return matrix->NumGlobalRows64();
+      }
+
+      types::global_dof_index
+      n() const
+      {
+        return matrix->NumGlobalCols64();
+      }
+
+      const Epetra_CrsMatrix &
+      trilinos_matrix() const
+      {
+        return *matrix;
+      }
+
+    private:
+      const Epetra_CrsMatrix *matrix;
+    };
+
+
+    /// Sets every zero diagonal entry of this process's rows to one: the
+    /// coarse DoFs whose whole support is constrained (their rows and
+    /// columns of P^T A P are zero) get the identity.
+    void
+    set_zero_diagonals_to_one(Epetra_CrsMatrix &matrix)
+    {
+      const Epetra_Map &rows = matrix.RowMap(), &columns = matrix.ColMap();
+      for (int row = 0; row < matrix.NumMyRows(); ++row)
+        {
+          int     length;
+          double *values;
+          int    *local_columns;
+          matrix.ExtractMyRowView(row, length, values, local_columns);
+          for (int k = 0; k < length; ++k)
+            if (columns.GID64(local_columns[k]) == rows.GID64(row) &&
+                values[k] == 0.)
+              values[k] = 1.;
+        }
+    }
+  } // namespace
+
+
   /**
-   * The hierarchy and the V-cycle, as the Epetra operator CG applies. The
-   * mesh's DoFs are numbered again here (with their level numbers); the
-   * maps below translate the field's numbering.
+   * The hierarchy and the V-cycle, as the Epetra operator CG applies.
+   * Level L (the finest) is the field itself: its DoFs, its matrix (not
+   * copied), its vectors. The levels below have the level numbers of a
+   * second DoFHandler on the same mesh, and their matrices are Galerkin
+   * products, computed by Trilinos (EpetraExt) on all processes.
    */
   class GeometricMultigridPreconditioner::VCycle : public FactorOperator
   {
@@ -36,7 +107,8 @@ namespace ssc
     VCycle(const DoFHandler<3> &field_dofs, const Epetra_Map &map);
 
     /// The level matrices, smoothers and coarse solve for @p matrix;
-    /// false if a line block of a level matrix is not positive definite.
+    /// false on every process if a line block of a level matrix is not
+    /// positive definite on one.
     bool
     build(const TrilinosWrappers::SparseMatrix &matrix,
           const AffineConstraints<double>      &constraints);
@@ -54,38 +126,45 @@ namespace ssc
     unsigned int
     n_levels() const
     {
-      return dofs.get_triangulation().n_global_levels();
+      return finest + 1;
     }
 
   private:
-    using Smoother = PreconditionChebyshev<SparseMatrix<double>,
-                                           Vector<double>,
-                                           LineBlockPreconditioner>;
+    using Smoother = PreconditionChebyshev<EpetraMatrixView,
+                                           VectorType,
+                                           DistributedLineBlocks>;
 
-    /// The constrained DoFs on every level: those of @p constraints on
-    /// the finest, then each coarse DoF whose node a constrained fine DoF
-    /// shares (a nested Lagrange hierarchy puts every coarse node on a
-    /// fine one).
+    /// The prolongation from level @p level - 1 to @p level without the
+    /// rows of @p constrained (kept in the pattern with zero values, so
+    /// that every coarse row of the products has its diagonal).
     void
-    constrain_levels(const AffineConstraints<double> &constraints);
+    make_prolongation(const unsigned int level, const IndexSet &constrained);
 
-    DoFHandler<3> dofs;
-    /// For each DoF of the field: the same DoF's number among the
-    /// active DoFs here and on the finest level.
-    std::vector<types::global_dof_index> active_of_field, finest_of_field;
+    /// solution[level] = (V-cycle) A_level^{-1} defect[level].
+    void
+    cycle(const unsigned int level) const;
 
-    MGConstrainedDoFs                                constrained_dofs;
-    MGLevelObject<SparsityPattern>                   sparsity;
-    MGLevelObject<SparseMatrix<double>>              matrices;
-    MGTransferPrebuilt<Vector<double>>               transfer;
-    DirectCoarseSolver                               coarse;
-    mg::SmootherRelaxation<Smoother, Vector<double>> smoother;
-    mg::Matrix<Vector<double>>                       level_matrices;
-    std::unique_ptr<Multigrid<Vector<double>>>       multigrid;
-    std::unique_ptr<
-      PreconditionMG<3, Vector<double>, MGTransferPrebuilt<Vector<double>>>>
-                           preconditioner;
-    mutable Vector<double> src, dst;
+    const DoFHandler<3> &field_dofs;
+    DoFHandler<3>        dofs;
+    const unsigned int   finest;
+    MPI_Comm             communicator;
+
+    /// Per level: this process's DoFs, its vertical lines and their
+    /// (x, y), the prolongation from the level below (none on level 0).
+    std::vector<IndexSet>                       owned;
+    std::vector<DoFLines>                       lines;
+    std::vector<std::vector<Point<2>>>          lateral;
+    double                                      line_tolerance;
+    std::vector<TrilinosWrappers::SparseMatrix> prolongation;
+    /// The field's constrained DoFs the finest prolongation is made for.
+    IndexSet finest_constrained;
+
+    std::vector<TrilinosWrappers::SparseMatrix>     coarse_matrices;
+    std::vector<std::unique_ptr<EpetraMatrixView>>  level_matrices;
+    std::vector<std::unique_ptr<Smoother>>          smoothers;
+    SolverControl                                   coarse_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> coarse;
+    mutable std::vector<VectorType>                 defect, solution, residual;
   };
 
 
@@ -93,72 +172,96 @@ namespace ssc
     const DoFHandler<3> &field_dofs,
     const Epetra_Map    &map)
     : FactorOperator(map)
+    , field_dofs(field_dofs)
     , dofs(field_dofs.get_triangulation())
+    , finest(field_dofs.get_triangulation().n_global_levels() - 1)
+    , communicator(field_dofs.get_communicator())
+    , owned(finest + 1)
+    , lines(finest + 1)
+    , lateral(finest + 1)
+    , prolongation(finest + 1)
+    , coarse_matrices(finest)
+    , level_matrices(finest + 1)
+    , smoothers(finest + 1)
+    , defect(finest + 1)
+    , solution(finest + 1)
+    , residual(finest + 1)
   {
     dofs.distribute_dofs(field_dofs.get_fe());
     dofs.distribute_mg_dofs();
-    // every active cell is on the finest level (require_uniform_refinements)
-    active_of_field.resize(field_dofs.n_dofs());
-    finest_of_field.resize(field_dofs.n_dofs());
-    const unsigned int n = field_dofs.get_fe().n_dofs_per_cell();
-    std::vector<types::global_dof_index> field_indices(n), active(n), level(n);
-    for (const auto &cell : dofs.active_cell_iterators())
+    // lines closer than a thousandth of the smallest cell are one line
+    line_tolerance =
+      1e-3 * GridTools::minimal_cell_diameter(dofs.get_triangulation());
+    for (unsigned int level = 0; level <= finest; ++level)
       {
-        const DoFHandler<3>::active_cell_iterator field_cell(
-          &dofs.get_triangulation(), cell->level(), cell->index(), &field_dofs);
-        field_cell->get_dof_indices(field_indices);
-        cell->get_dof_indices(active);
-        cell->get_mg_dof_indices(level);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            active_of_field[field_indices[i]] = active[i];
-            finest_of_field[field_indices[i]] = level[i];
-          }
+        owned[level] = level == finest ? field_dofs.locally_owned_dofs() :
+                                         dofs.locally_owned_mg_dofs(level);
+        lines[level] =
+          level == finest ?
+            vertical_lines(field_dofs,
+                           numbers::invalid_unsigned_int,
+                           line_tolerance,
+                           &lateral[level]) :
+            vertical_lines(dofs, level, line_tolerance, &lateral[level]);
+        defect[level].reinit(owned[level], communicator);
+        solution[level].reinit(owned[level], communicator);
+        residual[level].reinit(owned[level], communicator);
       }
-    src.reinit(dofs.n_dofs());
-    dst.reinit(dofs.n_dofs());
+    for (unsigned int level = 1; level < finest; ++level)
+      make_prolongation(level, IndexSet(dofs.n_dofs(level)));
   }
 
 
   void
-  GeometricMultigridPreconditioner::VCycle::constrain_levels(
-    const AffineConstraints<double> &constraints)
+  GeometricMultigridPreconditioner::VCycle::make_prolongation(
+    const unsigned int level,
+    const IndexSet    &constrained)
   {
-    const unsigned int finest = n_levels() - 1;
-    constrained_dofs.initialize(dofs);
-    std::vector<IndexSet> boundary(n_levels());
-    for (unsigned int level = 0; level < n_levels(); ++level)
-      boundary[level] = IndexSet(dofs.n_dofs(level));
-    for (types::global_dof_index i = 0; i < finest_of_field.size(); ++i)
-      if (constraints.is_constrained(i))
-        boundary[finest].add_index(finest_of_field[i]);
+    const IndexSet &rows = owned[level];
+    // each row once: the cells that share a fine DoF give the same values
+    std::vector<std::vector<std::pair<types::global_dof_index, double>>>
+      entries(rows.n_elements());
+    for_each_prolongation_entry(
+      dofs,
+      level,
+      level == finest ? &field_dofs : nullptr,
+      [&](const auto fine, const auto coarse, const double value) {
+        if (!rows.is_element(fine))
+          return;
+        auto &row = entries[rows.index_within_set(fine)];
+        if (std::find_if(row.begin(), row.end(), [&](const auto &entry) {
+              return entry.first == coarse;
+            }) == row.end())
+          row.emplace_back(coarse, constrained.is_element(fine) ? 0. : value);
+      });
 
-    const FiniteElement<3>              &fe = dofs.get_fe();
-    std::vector<types::global_dof_index> parent(fe.n_dofs_per_cell()),
-      child(fe.n_dofs_per_cell());
-    for (unsigned int level = finest; level > 0; --level)
+    DynamicSparsityPattern pattern(rows.size(), dofs.n_dofs(level - 1), rows);
+    for (unsigned int k = 0; k < entries.size(); ++k)
       {
-        for (const auto &cell : dofs.mg_cell_iterators_on_level(level - 1))
+        AssertThrow(!entries[k].empty(),
+                    ExcMessage("GeometricMultigridPreconditioner: a DoF of "
+                               "this process is on none of its cells."));
+        for (const auto &entry : entries[k])
+          pattern.add(rows.nth_index_in_set(k), entry.first);
+      }
+    prolongation[level].reinit(rows, owned[level - 1], pattern, communicator);
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    for (unsigned int k = 0; k < entries.size(); ++k)
+      {
+        columns.clear();
+        values.clear();
+        for (const auto &entry : entries[k])
           {
-            cell->get_mg_dof_indices(parent);
-            for (unsigned int c = 0; c < cell->n_children(); ++c)
-              {
-                cell->child(c)->get_mg_dof_indices(child);
-                const FullMatrix<double> &prolongation =
-                  fe.get_prolongation_matrix(c, cell->refinement_case());
-                for (unsigned int i = 0; i < child.size(); ++i)
-                  if (boundary[level].is_element(child[i]))
-                    for (unsigned int j = 0; j < parent.size(); ++j)
-                      if (std::abs(prolongation(i, j) - 1.) < 1e-12)
-                        boundary[level - 1].add_index(parent[j]);
-              }
+            columns.push_back(entry.first);
+            values.push_back(entry.second);
           }
+        prolongation[level].set(rows.nth_index_in_set(k),
+                                columns.size(),
+                                columns.data(),
+                                values.data());
       }
-    for (unsigned int level = 0; level < n_levels(); ++level)
-      {
-        boundary[level].compress();
-        constrained_dofs.add_boundary_indices(dofs, level, boundary[level]);
-      }
+    prolongation[level].compress(VectorOperation::insert);
   }
 
 
@@ -167,71 +270,84 @@ namespace ssc
     const TrilinosWrappers::SparseMatrix &matrix,
     const AffineConstraints<double>      &constraints)
   {
-    const unsigned int finest = n_levels() - 1;
-    // the last V-cycle's objects go first, in the order they refer to each
-    // other (deal.II checks that nothing still used is destroyed)
-    preconditioner.reset();
-    multigrid.reset();
-    level_matrices.reset();
-    smoother.clear();
-    matrices.resize(0, finest);
-    sparsity.resize(0, finest);
-    constrain_levels(constraints);
+    for (auto &smoother : smoothers)
+      smoother.reset();
+    coarse.reset();
 
-    // the finest level's matrix: the assembled one in level numbering (the
-    // rows through Epetra's views: deal.II's row iterators copy each row)
-    const Epetra_CrsMatrix &crs            = matrix.trilinos_matrix();
-    const auto              for_each_entry = [&](const auto &visit) {
-      for (int row = 0; row < crs.NumMyRows(); ++row)
-        {
-          int     length;
-          double *values;
-          int    *columns;
-          crs.ExtractMyRowView(row, length, values, columns);
-          const auto level_row = finest_of_field[crs.GRID64(row)];
-          for (int k = 0; k < length; ++k)
-            visit(level_row,
-                  finest_of_field[crs.ColMap().GID64(columns[k])],
-                  values[k]);
-        }
-    };
-    DynamicSparsityPattern pattern(dofs.n_dofs(finest));
-    for_each_entry([&](const auto row, const auto column, const double) {
-      pattern.add(row, column);
-    });
-    sparsity[finest].copy_from(pattern);
-    matrices[finest].reinit(sparsity[finest]);
-    for_each_entry([&](const auto row, const auto column, const double value) {
-      matrices[finest].set(row, column, value);
-    });
-    make_galerkin_hierarchy(dofs, constrained_dofs, sparsity, matrices);
-
-    // lines closer than a thousandth of the smallest cell are one line
-    const double tolerance =
-      1e-3 * GridTools::minimal_cell_diameter(dofs.get_triangulation());
-    MGLevelObject<Smoother::AdditionalData> smoother_data(0, finest);
-    for (unsigned int level = 0; level <= finest; ++level)
+    IndexSet constrained(field_dofs.n_dofs());
+    for (const auto dof : owned[finest])
+      if (constraints.is_constrained(dof))
+        constrained.add_index(dof);
+    constrained.compress();
+    if (prolongation[finest].m() == 0 || constrained != finest_constrained)
       {
-        smoother_data[level].smoothing_range     = 15.;
-        smoother_data[level].degree              = 4;
-        smoother_data[level].eig_cg_n_iterations = 20;
-        auto lines = std::make_shared<LineBlockPreconditioner>();
-        if (!lines->initialize(matrices[level],
-                               vertical_lines(dofs, level, tolerance)))
-          return false;
-        smoother_data[level].preconditioner = lines;
+        make_prolongation(finest, constrained);
+        finest_constrained = constrained;
       }
-    smoother.initialize(matrices, smoother_data);
-    coarse.initialize(matrices[0]);
-    transfer.initialize_constraints(constrained_dofs);
-    transfer.build(dofs);
-    level_matrices.initialize(matrices);
-    multigrid = std::make_unique<Multigrid<Vector<double>>>(
-      level_matrices, coarse, transfer, smoother, smoother);
-    preconditioner = std::make_unique<
-      PreconditionMG<3, Vector<double>, MGTransferPrebuilt<Vector<double>>>>(
-      dofs, *multigrid, transfer);
+
+    // A_{l-1} = P^T (A_l P), from the finest level's matrix down
+    level_matrices[finest] =
+      std::make_unique<EpetraMatrixView>(matrix.trilinos_matrix());
+    for (unsigned int level = finest; level > 0; --level)
+      {
+        const TrilinosWrappers::SparseMatrix &fine =
+          level == finest ? matrix : coarse_matrices[level];
+        TrilinosWrappers::SparseMatrix product;
+        fine.mmult(product, prolongation[level]);
+        prolongation[level].Tmmult(coarse_matrices[level - 1], product);
+        set_zero_diagonals_to_one(const_cast<Epetra_CrsMatrix &>(
+          coarse_matrices[level - 1].trilinos_matrix()));
+        level_matrices[level - 1] = std::make_unique<EpetraMatrixView>(
+          coarse_matrices[level - 1].trilinos_matrix());
+      }
+
+    // Chebyshev (degree 4) on the line blocks on every level but the
+    // coarsest, which is solved exactly
+    bool positive_definite = true;
+    for (unsigned int level = 1; level <= finest && positive_definite; ++level)
+      {
+        auto blocks = std::make_shared<DistributedLineBlocks>();
+        positive_definite =
+          blocks->initialize(level_matrices[level]->trilinos_matrix(),
+                             lines[level],
+                             lateral[level],
+                             line_tolerance);
+        Smoother::AdditionalData data;
+        data.smoothing_range     = 15.;
+        data.degree              = 4;
+        data.eig_cg_n_iterations = 20;
+        data.preconditioner      = blocks;
+        smoothers[level]         = std::make_unique<Smoother>();
+        smoothers[level]->initialize(*level_matrices[level], data);
+      }
+    if (!positive_definite)
+      {
+        for (auto &smoother : smoothers)
+          smoother.reset();
+        return false;
+      }
+    coarse = std::make_unique<TrilinosWrappers::SolverDirect>(coarse_control);
+    coarse->initialize(coarse_matrices[0]);
     return true;
+  }
+
+
+  void
+  GeometricMultigridPreconditioner::VCycle::cycle(
+    const unsigned int level) const
+  {
+    if (level == 0)
+      {
+        coarse->solve(solution[0], defect[0]);
+        return;
+      }
+    smoothers[level]->vmult(solution[level], defect[level]);
+    level_matrices[level]->vmult(residual[level], solution[level]);
+    residual[level].sadd(-1., 1., defect[level]);
+    prolongation[level].Tvmult(defect[level - 1], residual[level]);
+    cycle(level - 1);
+    prolongation[level].vmult_add(solution[level], solution[level - 1]);
+    smoothers[level]->step(solution[level], defect[level]);
   }
 
 
@@ -240,13 +356,12 @@ namespace ssc
     const Epetra_MultiVector &X,
     Epetra_MultiVector       &Y) const
   {
+    const int n = X.MyLength();
     for (int v = 0; v < X.NumVectors(); ++v)
       {
-        for (types::global_dof_index i = 0; i < active_of_field.size(); ++i)
-          src(active_of_field[i]) = X[v][i];
-        preconditioner->vmult(dst, src);
-        for (types::global_dof_index i = 0; i < active_of_field.size(); ++i)
-          Y[v][i] = dst(active_of_field[i]);
+        std::copy(X[v], X[v] + n, defect[finest].begin());
+        cycle(finest);
+        std::copy(solution[finest].begin(), solution[finest].end(), Y[v]);
       }
     return 0;
   }
@@ -265,18 +380,6 @@ namespace ssc
 
 
   void
-  GeometricMultigridPreconditioner::require_one_process(
-    const MPI_Comm communicator)
-  {
-    AssertThrow(Utilities::MPI::n_mpi_processes(communicator) == 1,
-                ExcMessage("Elasticity/Linear solver/Preconditioner = gmg "
-                           "builds its level matrices on one process: run "
-                           "on one MPI rank, or use ldlt (the factor "
-                           "distributed over the ranks) or amg."));
-  }
-
-
-  void
   GeometricMultigridPreconditioner::require_uniform_refinements(
     const Triangulation<3> &tria)
   {
@@ -285,14 +388,20 @@ namespace ssc
                            "needs refinement levels: set Mesh/Global "
                            "refinements to 1 or more (and a coarser mesh: "
                            "each refinement has 8 times the cells)."));
+    // this process's cells (a distributed mesh keeps far cells coarse)
+    bool uniform = true;
     for (const auto &cell : tria.active_cell_iterators())
-      AssertThrow(static_cast<unsigned int>(cell->level()) ==
-                    tria.n_global_levels() - 1,
-                  ExcMessage("Elasticity/Linear solver/Preconditioner = gmg "
-                             "needs a mesh of uniform refinements: set "
-                             "Mesh/Region of interest/Local refinements to "
-                             "0 (refine with Mesh/Global refinements "
-                             "instead)."));
+      if (cell->is_locally_owned() &&
+          static_cast<unsigned int>(cell->level()) !=
+            tria.n_global_levels() - 1)
+        uniform = false;
+    AssertThrow(Utilities::MPI::min(uniform ? 1 : 0, tria.get_communicator()) ==
+                  1,
+                ExcMessage("Elasticity/Linear solver/Preconditioner = gmg "
+                           "needs a mesh of uniform refinements: set "
+                           "Mesh/Region of interest/Local refinements to "
+                           "0 (refine with Mesh/Global refinements "
+                           "instead)."));
   }
 
 
@@ -301,7 +410,6 @@ namespace ssc
     const TrilinosWrappers::SparseMatrix &matrix,
     const AffineConstraints<double>      &constraints)
   {
-    require_one_process(matrix.get_mpi_communicator());
     const Epetra_Map &map = matrix.trilinos_matrix().RowMap();
     preconditioner.reset();
     if (cycle == nullptr || !cycle->OperatorDomainMap().SameAs(map))

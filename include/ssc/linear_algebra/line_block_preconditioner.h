@@ -2,7 +2,10 @@
 #define ssc_linear_algebra_line_block_preconditioner_h
 
 #include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+
+#include <Epetra_CrsMatrix.h>
 
 #include <vector>
 
@@ -51,13 +54,36 @@ namespace ssc
     bool
     initialize(const SparseMatrix<double> &matrix, const DoFLines &lines);
 
+    /// The same for this process's rows of a distributed matrix, and
+    /// @p more_rows (other processes' rows, imported): @p lines numbers the
+    /// matrix's rows in local order (as vertical_lines() does), then those
+    /// of @p more_rows. Couplings to DoFs of neither are dropped.
+    bool
+    initialize(const Epetra_CrsMatrix &matrix,
+               const DoFLines         &lines,
+               const Epetra_CrsMatrix *more_rows = nullptr);
+
     /// dst = D^{-1} src with D the line-block diagonal.
     void
     vmult(Vector<double> &dst, const Vector<double> &src) const;
 
+    /// The same on this process's elements of distributed vectors.
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const;
+
+    /// The same on contiguous arrays of m() elements.
+    void
+    vmult(double *dst, const double *src) const;
+
     /// The same: D is symmetric.
     void
     Tvmult(Vector<double> &dst, const Vector<double> &src) const;
+
+    /// The same: D is symmetric.
+    void
+    Tvmult(TrilinosWrappers::MPI::Vector       &dst,
+           const TrilinosWrappers::MPI::Vector &src) const;
 
     types::global_dof_index
     m() const;
@@ -82,6 +108,15 @@ namespace ssc
       int                                  bandwidth = 0;
       std::vector<double>                  band;
     };
+
+    /// Sorts the DoFs along their lines and factorises the blocks;
+    /// @p for_each_in_row(row, visit) calls visit(column, value) for each
+    /// entry of a row (local numbers).
+    template <typename RowVisitor>
+    bool
+    factorize(const types::global_dof_index n_rows,
+              const DoFLines               &dof_lines,
+              const RowVisitor             &for_each_in_row);
 
     std::vector<Line>       lines;
     types::global_dof_index size = 0;

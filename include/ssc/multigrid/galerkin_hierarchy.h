@@ -10,9 +10,32 @@
 
 #include <deal.II/multigrid/mg_constrained_dofs.h>
 
+#include <functional>
+
 namespace ssc
 {
   using namespace dealii;
+
+  /**
+   * The finite element's prolongation from level @p level - 1 to @p level
+   * of a nested mesh, entry by entry: visit(fine, coarse, value) for each
+   * nonzero entry of the rows of this process's cells on @p level (an
+   * entry shared by several cells comes once per cell, with the same
+   * value). The coarse DoFs have their level numbers; the fine ones too,
+   * or, with @p fine_active_dofs, their numbers among the active DoFs of
+   * that DoFHandler on the same mesh (for the finest level of uniform
+   * refinements, whose cells are the active ones).
+   *
+   * Why here: the level matrices of the serial hierarchy below and of the
+   * distributed V-cycle are both products with this one prolongation.
+   */
+  void
+  for_each_prolongation_entry(
+    const DoFHandler<3> &dof_handler,
+    const unsigned int   level,
+    const DoFHandler<3> *fine_active_dofs,
+    const std::function<
+      void(types::global_dof_index, types::global_dof_index, double)> &visit);
 
   /**
    * The matrices of the levels below the finest as Galerkin products

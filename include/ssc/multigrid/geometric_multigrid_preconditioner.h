@@ -31,10 +31,15 @@ namespace ssc
    *
    * Needs a mesh of uniform refinements of a coarse mesh (Mesh/Global
    * refinements >= 1, no local refinement), so that every active cell is on
-   * the finest level, and one MPI rank (the level operators are serial
-   * deal.II matrices; a distributed hierarchy is the next step). The
+   * the finest level. Runs on any number of MPI ranks: the finest level is
+   * the distributed tangent itself (not copied), the coarser levels are
+   * Trilinos matrices (their Galerkin products computed by EpetraExt), the
+   * line blocks are each rank's parts of the lines (BackgroundMesh orders
+   * its coarse cells column by column so that p4est's partition cuts few
+   * lines), and the coarsest level is solved by Amesos's KLU. The
    * constrained DoFs of the update (Dirichlet conditions, ties) are kept
-   * out of the coarse corrections.
+   * out of the coarse corrections: their rows of the finest prolongation
+   * are zero.
    */
   class GeometricMultigridPreconditioner
     : public TrilinosWrappers::PreconditionBase
@@ -45,10 +50,6 @@ namespace ssc
     explicit GeometricMultigridPreconditioner(const DoFHandler<3> &dof_handler);
 
     ~GeometricMultigridPreconditioner() override;
-
-    /// Refuses several MPI ranks, naming the alternatives.
-    static void
-    require_one_process(const MPI_Comm communicator);
 
     /// Refuses a mesh without refinement levels or with local refinement,
     /// naming the mesh parameters.
