@@ -1,5 +1,4 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/timer.h>
 
 #include <deal.II/lac/trilinos_index_access.h>
 
