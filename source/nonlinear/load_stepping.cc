@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <string>
 
 #include <ssc/nonlinear/load_stepping.h>
@@ -116,11 +117,19 @@ namespace ssc
     if (newton.get_parameters().predictor != Predictor::extrapolation ||
         last_load_increment <= 0.)
       return false;
-    NonlinearProblem            &problem = newton.get_problem();
-    NonlinearProblem::VectorType guess   = converged;
+    NonlinearProblem &problem = newton.get_problem();
+    // Where the increment starts without the prediction. With prescribed
+    // values still to be reached its residual (of the free unknowns) does
+    // not say how far it is from equilibrium: only an inverted cell then
+    // drops the prediction.
+    const double                 unpredicted = problem.constraint_gap() > 0. ?
+                                                 std::numeric_limits<double>::infinity() :
+                                                 problem.residual();
+    NonlinearProblem::VectorType guess       = converged;
     guess.add((next - position) / last_load_increment, last_change);
     problem.set_state(guess);
-    if (std::isfinite(problem.residual()))
+    // false for an inverted cell (an infinite residual) too
+    if (problem.residual() < unpredicted)
       return true;
     problem.set_state(converged);
     return false;

@@ -115,7 +115,8 @@ namespace ssc
       "converged state. extrapolation: at the last converged state plus "
       "the last converged increment's change, scaled by the ratio of the "
       "load increments (a secant predictor; dropped where it inverts a "
-      "cell). The first increment starts at the converged state either "
+      "cell and, where only loads changed, unless it lowers the residual "
+      "norm). The first increment starts at the converged state either "
       "way.");
     prm.add_parameter("Easy iterations",
                       easy_iterations,

@@ -41,7 +41,8 @@ namespace ssc
    * than Max increments increments (converged or cut) are an error too, so
    * that a solve crawling in tiny increments stops. Each increment starts
    * from a secant predictor (Nonlinear solver/Predictor), the last
-   * converged increment scaled to this one, kept across calls of follow().
+   * converged increment scaled to this one, kept across calls of follow(),
+   * where it lowers the residual.
    */
   class LoadStepper
   {
@@ -70,8 +71,11 @@ namespace ssc
   private:
     /// With Predictor = extrapolation: moves the state, at @p position
     /// with the load of @p next applied, along the last converged
-    /// increment scaled to this one; undone if that inverts a cell.
-    /// Returns whether the state moved.
+    /// increment scaled to this one; undone where that inverts a cell and,
+    /// under loads alone (no prescribed value moved), unless it lowers the
+    /// residual norm: where the response stiffens or snaps, the
+    /// extrapolated state can be further from equilibrium than the
+    /// converged one. Returns whether the state moved.
     bool
     predict(const NonlinearProblem::VectorType &converged,
             const double                        position,
