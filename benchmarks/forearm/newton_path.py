@@ -1,0 +1,90 @@
+#!/usr/bin/python3
+"""Where the main scene's Newton iterations go, and what makes its tangents
+indefinite: prm/forearm_indentation.prm to 1.8 N in variants that change
+one thing each (the predictor, the size of the increments, the contact
+penalty, depth instead of force control, the volumetric stabilisation, the
+plain displacement formulation), run one after the other on one MPI rank. Each run's log is
+read for
+
+- the tangents that are not positive definite (each "not positive
+  definite" line: a factorisation that found negative pivots), and how
+  many of them were the tangent of a converged state: with Predictor =
+  none an increment's first tangent is the last converged state's, so an
+  indefinite one there would be an unstable equilibrium;
+- the trust-region steps and how many of them were rejected.
+
+Writes benchmarks/forearm/results/newton_path.csv (one row per variant:
+Newton and CG iterations, indefinite tangents, trust-region steps, wall
+time, depths at the seven forces or forces at the seven depths).
+
+    /usr/bin/python3 benchmarks/forearm/newton_path.py
+"""
+import os, sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
+import ssc_runner  # noqa: E402
+
+SCENE = os.path.join(ssc_runner.ROOT, "prm", "forearm_indentation.prm")
+CSV = os.path.join(HERE, "results", "newton_path.csv")
+COMMON = ["Run/Write fields=false", "Punch/Section=false",
+          "Punch/Profile length=0", "Punch/Depth uncertainty="]
+DEPTH_CONTROL = ["Punch/Control=displacement", "Punch/Depth=11.05",
+                 "Punch/Load steps=7"]
+VARIANTS = [
+    ("scene", []),
+    ("predictor none", ["Nonlinear solver/Predictor=none"]),
+    ("predictor none, fixed increments of 0.044 N",
+     ["Nonlinear solver/Predictor=none", "Nonlinear solver/Initial steps=8",
+      "Nonlinear solver/Growth factor=1"]),
+    ("contact penalty 100", ["Punch/Contact penalty=100"]),
+    ("contact penalty 30", ["Punch/Contact penalty=30"]),
+    ("depth control to 11.05 mm in 7 steps", DEPTH_CONTROL),
+    ("volumetric stabilisation 0.02",
+     ["Elasticity/Volumetric stabilisation=0.02"]),
+    ("displacement formulation (locks)",
+     ["Elasticity/Formulation=displacement"]),
+]
+
+
+def log_counts(log):
+    """Indefinite tangents (all, and at the start of an increment) and
+    trust-region steps (all, rejected) in an ssc log."""
+    lines = log.splitlines()
+    indefinite = sum("not positive definite (" in line for line in lines)
+    at_start = sum(1 for line, following in zip(lines, lines[1:])
+                   if "Newton: residual" in line
+                   and "not positive definite (" in following)
+    steps = [line for line in lines if "trust region: step" in line]
+    return dict(indefinite_tangents=indefinite,
+                indefinite_at_increment_start=at_start,
+                trust_region_steps=len(steps),
+                rejected_trust_region_steps=sum("rejected" in line
+                                                for line in steps))
+
+
+def measure():
+    rows = []
+    for label, overrides in VARIANTS:
+        with ssc_runner.scratch() as tmp:
+            result = ssc_runner.run(SCENE, COMMON + overrides, tmp, "run",
+                                    timeout=1800)
+            if not result.ok:
+                print(f"{label}: failed: {result.stderr[-300:]}")
+                continue
+            s = result.summary()
+        solver = s["solver"]
+        row = dict(variant=label, dofs=s["dofs"],
+                   newton_iterations=solver["newton_iterations"],
+                   cg_iterations=solver["linear_iterations"],
+                   **log_counts(result.stdout),
+                   wall_s=round(s["timings"]["total"], 1),
+                   forces_N=" ".join(f"{f:.4f}" for f in s["force_N"]),
+                   depths_mm=" ".join(f"{d:.4f}" for d in s["depth_mm"]))
+        print(row, flush=True)
+        rows.append(row)
+    ssc_runner.write_rows(CSV, rows)
+
+
+if __name__ == "__main__":
+    measure()
