@@ -3,8 +3,8 @@
 indefinite: prm/forearm_indentation.prm to 1.8 N in variants that change
 one thing each (the predictor, the size of the increments, the contact
 penalty, depth instead of force control, the volumetric stabilisation, the
-plain displacement formulation), run one after the other on one MPI rank. Each run's log is
-read for
+plain displacement formulation), run one after the other on one MPI rank.
+Each run's log is read for
 
 - the tangents that are not positive definite (each "not positive
   definite" line: a factorisation that found negative pivots), and how
