@@ -44,10 +44,20 @@ def main():
              f"k = {summary['stiffness_N_per_mm']:.4f} N/mm)")
     reach = depth.max()
     if "depth_uncertainty_mm" in summary:
+        # the bar is the size of the error (depth_uncertainty_method says
+        # how the run computed it; without it the prm gave it); the open
+        # marker is where the richer discretisation would put the depth
         error = np.array(summary["depth_uncertainty_mm"], dtype=float)
         reach = (depth + error).max()
+        how = summary.get("depth_uncertainty_method",
+                          "from a convergence study, given in the prm")
         ax.errorbar(depth, force, xerr=error, fmt="o-", capsize=3,
-                    label=label + ", discretisation error")
+                    label=label + ";\nbars: discretisation error, " + how)
+        if "depth_error_estimate_mm" in summary:
+            richer = depth + np.array(summary["depth_error_estimate_mm"],
+                                      dtype=float)
+            ax.plot(richer, force, "o", mfc="none", color="tab:blue",
+                    label="depth after one Newton step of Q2-P0 from it")
     else:
         ax.plot(depth, force, "o-", label=label)
     if os.path.exists(REFERENCE):

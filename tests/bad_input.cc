@@ -353,6 +353,12 @@ main(int argc, char **argv)
          "Punch/Forces=0.1, 0.2",
          "-s",
          "Punch/Depth uncertainty=0.01"});
+  check("a depth error estimate under displacement control",
+        valid_stack,
+        {"-s",
+         "Punch/Control=displacement",
+         "-s",
+         "Punch/Depth error estimate=enriched degree"});
   check("local refinements beyond the cell limit",
         std::string(valid_stack) +
           "subsection Run\n  set Output directory = results\nend\n"

@@ -85,6 +85,17 @@ namespace ssc
 
 
   void
+  IndentationRecord::record_depth_error(const double       depth_change,
+                                        const std::string &method,
+                                        const types::global_dof_index dofs)
+  {
+    result.depth_error_estimates.push_back(depth_change);
+    depth_error_method = method;
+    depth_error_dofs   = dofs;
+  }
+
+
+  void
   IndentationRecord::print_step(const unsigned int step,
                                 const unsigned int n_steps) const
   {
@@ -93,6 +104,15 @@ namespace ssc
     pcout << "Load step " << step + 1 << " of " << n_steps << ": force "
           << std::setprecision(6) << result.forces.back() << " N, depth "
           << result.depths.back() << " mm";
+    if (result.depth_error_estimates.size() == result.depths.size())
+      {
+        const double change = result.depth_error_estimates.back();
+        if (std::isnan(change))
+          pcout << " (no error estimate)";
+        else
+          pcout << " (estimated error " << std::showpos << change
+                << std::noshowpos << " mm)";
+      }
     if (parameters.punch.shape == PunchShape::rectangle)
       {
         pcout << ", layer strains under the centre";
@@ -194,6 +214,16 @@ namespace ssc
     summary["depth_mm"]                           = result.depths;
     if (!punch.depth_uncertainty.empty())
       summary["depth_uncertainty_mm"] = punch.depth_uncertainty;
+    if (!result.depth_error_estimates.empty())
+      {
+        std::vector<double> size;
+        for (const double change : result.depth_error_estimates)
+          size.push_back(std::abs(change));
+        summary["depth_error_estimate_mm"]  = result.depth_error_estimates;
+        summary["depth_uncertainty_mm"]     = size;
+        summary["depth_uncertainty_method"] = depth_error_method;
+        summary["depth_uncertainty_dofs"]   = depth_error_dofs;
+      }
     summary["stiffness_N_per_mm"]            = measured.stiffness;
     summary["half_space_stiffness_N_per_mm"] = measured.half_space_stiffness;
     if (loading.force_control() && driver.linear())

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <iomanip>
+#include <memory>
 
 #include <ssc/output/field_output.h>
 #include <ssc/output/run_output.h>
+#include <ssc/scenes/enriched_depth_estimate.h>
 #include <ssc/scenes/indentation_scene.h>
 #include <ssc/scenes/mechanics_model.h>
 #include <ssc/scenes/punch_loading.h>
@@ -47,9 +49,33 @@ namespace ssc
                                                      Kinematics::finite_strain);
     IndentationRecord record(parameters, model, loading, driver, scene.pcout());
 
+    std::unique_ptr<EnrichedDepthEstimate> depth_error;
+    if (parameters.punch.depth_error_estimate ==
+        DepthErrorEstimate::enriched_degree)
+      {
+        TimerOutput::Scope t(scene.timer(), "error estimate");
+        depth_error =
+          std::make_unique<EnrichedDepthEstimate>(parameters, mpi_communicator);
+        scene.pcout() << "Depth error estimate: a Q2-P0 step of "
+                      << depth_error->n_dofs() << " DoFs per force"
+                      << std::endl;
+      }
+
     const std::vector<double> loads   = parameters.punch.loads();
     const auto                on_step = [&](const unsigned int step) {
       record.record(step, loads[step]);
+      if (depth_error)
+        {
+          TimerOutput::Scope t(scene.timer(), "error estimate");
+          record.record_depth_error(depth_error->depth_change(system,
+                                                              loads[step]),
+                                    EnrichedDepthEstimate::method(),
+                                    depth_error->n_dofs());
+          if (!depth_error->failure_reason().empty())
+            scene.pcout() << "  no depth error estimate at " << loads[step]
+                          << " N: " << depth_error->failure_reason()
+                          << std::endl;
+        }
       if (parameters.run.write_fields)
         {
           TimerOutput::Scope t(scene.timer(), "output");

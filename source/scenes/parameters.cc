@@ -297,6 +297,15 @@ namespace ssc
                            "Newton's method, so give at least one layer a "
                            "nonlinear Material model (a finite-strain "
                            "law)."));
+    AssertThrow(punch.depth_error_estimate == DepthErrorEstimate::none ||
+                  (run.scene == SceneKind::indentation &&
+                   punch.control == PunchControl::force &&
+                   elasticity.degree == 1),
+                ExcMessage("Punch/Depth error estimate = enriched degree "
+                           "estimates the depth at the prescribed forces of "
+                           "a Q1 indentation by a step of Q2-P0: it needs "
+                           "Run/Scene = indentation, Punch/Control = force "
+                           "and Elasticity/Degree = 1."));
     AssertThrow(!punch.edge_contact || nonlinear,
                 ExcMessage("Punch/Edge contact needs Newton's method: give "
                            "at least one layer a nonlinear Material model "

@@ -157,6 +157,19 @@ namespace ssc
       "the parameter set it was measured for: the study says when it has "
       "to be measured again.",
       Patterns::List(Patterns::Double(0)));
+    prm.add_parameter(
+      "Depth error estimate",
+      depth_error_estimate,
+      "How the run itself estimates the discretisation error of the depth "
+      "at each of the Forces (force control, Elasticity/Degree = 1). "
+      "enriched degree: one Newton step of Q2-P0 (Q2 with the cell's mean "
+      "dilatation) on the same mesh from each converged state, written as "
+      "depth_error_estimate_mm (signed) and depth_uncertainty_mm (its size) "
+      "in summary.json and drawn as error bars; exact for linear layers (the "
+      "Q2-P0 depth minus this one); at finite strain not given (null) where "
+      "the Q2-P0 tangent at the state is indefinite, as it is for the "
+      "forearm scene. Costs one Q2 assembly and solve per force. Excludes "
+      "Depth uncertainty. none: no estimate.");
   }
 
 
@@ -253,6 +266,11 @@ namespace ssc
           AssertThrow(forces[k] > 0 && (k == 0 || forces[k] > forces[k - 1]),
                       ExcMessage("Punch/Forces must be positive and "
                                  "increasing (N)."));
+        AssertThrow(depth_uncertainty.empty() ||
+                      depth_error_estimate == DepthErrorEstimate::none,
+                    ExcMessage("Punch/Depth uncertainty and Depth error "
+                               "estimate both give the depth's error: set "
+                               "one of them."));
         AssertThrow(depth_uncertainty.empty() ||
                       depth_uncertainty.size() == forces.size(),
                     ExcMessage("Punch/Depth uncertainty needs one value per "

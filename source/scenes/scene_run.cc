@@ -28,6 +28,7 @@ namespace ssc
                                        "setup",
                                        "assembly",
                                        "solve",
+                                       "error estimate",
                                        "output"};
     constexpr unsigned int n_phases = sizeof(phases) / sizeof(phases[0]);
   } // namespace

@@ -29,6 +29,9 @@ namespace ssc
     /// Each layer's compressive strain under the punch centre, per load
     /// step (outer) and layer from the top (inner).
     std::vector<std::vector<double>> layer_strains;
+    /// The estimated discretisation error of the depth (richer minus this
+    /// discretisation, mm) per load step; empty without an estimate.
+    std::vector<double> depth_error_estimates;
   };
 
 
@@ -54,6 +57,14 @@ namespace ssc
     /// state.
     void
     record(const unsigned int step, const double load);
+
+    /// Records the estimated error of the last recorded step's depth,
+    /// @p depth_change (mm, a richer discretisation's depth minus this
+    /// one's), by @p method on @p dofs DoFs.
+    void
+    record_depth_error(const double                  depth_change,
+                       const std::string            &method,
+                       const types::global_dof_index dofs);
 
     /// The force (N) of the last recorded step.
     double
@@ -92,6 +103,9 @@ namespace ssc
     FrictionLog                      friction_log;
     /// |reaction - 1 N| of the tied punch under the unit force (linear)
     double tie_balance = 0;
+    /// how the depth's error was estimated and on how many DoFs
+    std::string             depth_error_method;
+    types::global_dof_index depth_error_dofs = 0;
   };
 } // namespace ssc
 

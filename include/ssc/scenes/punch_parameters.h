@@ -60,6 +60,22 @@ namespace ssc
              {PunchControl::force, "force"}}};
   }
 
+  /// How the run estimates the discretisation error of the depth at each
+  /// force (EnrichedDepthEstimate): not at all, or by one Newton step of
+  /// the next richer element on the same mesh.
+  enum class DepthErrorEstimate
+  {
+    none,
+    enriched_degree
+  };
+
+  constexpr std::array<std::pair<DepthErrorEstimate, const char *>, 2>
+  enum_table(DepthErrorEstimate)
+  {
+    return {{{DepthErrorEstimate::none, "none"},
+             {DepthErrorEstimate::enriched_degree, "enriched degree"}}};
+  }
+
   /// The punch's flat face: a disk (the forearm indenters) or a rectangle
   /// (the face of an ultrasound probe).
   enum class PunchShape
@@ -88,6 +104,7 @@ namespace ssc
     unsigned int        load_steps = 1;
     std::vector<double> forces     = {0.35, 0.5, 0.75, 1.0, 1.25, 1.5, 1.8};
     std::vector<double> depth_uncertainty;
+    DepthErrorEstimate  depth_error_estimate = DepthErrorEstimate::none;
     double              profile_length       = 30;
     unsigned int        profile_points       = 301;
     bool                section              = true;

@@ -1,0 +1,156 @@
+#include <deal.II/fe/fe_tools.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <cctype>
+#include <limits>
+#include <sstream>
+
+#include <ssc/scenes/enriched_depth_estimate.h>
+
+namespace ssc
+{
+  namespace
+  {
+    /// The scene's parameters with the next richer discretisation and no
+    /// output or estimate of its own.
+    std::vector<std::string>
+    enriched_overrides(const Parameters &parameters)
+    {
+      std::vector<std::string> overrides = parameters.overrides();
+      overrides.emplace_back("Elasticity/Degree=" +
+                             std::to_string(parameters.elasticity.degree + 1));
+      // Q2-P0: the dilatation space of the scene (Q1-P0) kept, so that the
+      // richer spaces contain the scene's; with P1 the cell-wise variation
+      // of J that Q1-P0 leaves free would carry bulk energy at once
+      overrides.emplace_back("Elasticity/Formulation=mean dilatation");
+      overrides.emplace_back("Run/Write fields=false");
+      overrides.emplace_back("Punch/Depth error estimate=none");
+      return overrides;
+    }
+
+
+    /// @p parameters after reading @p scene's file with the enriched
+    /// overrides (a Parameters object is neither copied nor moved).
+    const Parameters &
+    read_enriched(Parameters &parameters, const Parameters &scene)
+    {
+      // Parameters::check_formulation() allows Q1 scenes only
+      Assert(scene.elasticity.degree == 1, ExcInternalError());
+      parameters.read(scene.file(), enriched_overrides(scene));
+      return parameters;
+    }
+  } // namespace
+
+
+  EnrichedDepthEstimate::EnrichedDepthEstimate(const Parameters &parameters,
+                                               const MPI_Comm mpi_communicator)
+    : silent(std::cout, false)
+    , timer(mpi_communicator,
+            silent,
+            TimerOutput::never,
+            TimerOutput::wall_times)
+    , model(read_enriched(enriched_parameters, parameters),
+            mpi_communicator,
+            timer,
+            silent,
+            silent)
+    , loading(enriched_parameters, model.system(), timer, silent)
+  {}
+
+
+  std::string
+  EnrichedDepthEstimate::method()
+  {
+    return "one Newton step of Q2-P0 on the same mesh from the converged Q1 "
+           "state (the depth's change; dual-weighted residual with the "
+           "adjoint in Q2-P0); none where the Q2-P0 tangent is indefinite";
+  }
+
+
+  types::global_dof_index
+  EnrichedDepthEstimate::n_dofs()
+  {
+    return model.system().field().dof_handler().n_dofs();
+  }
+
+
+  void
+  EnrichedDepthEstimate::interpolate_state(const ElasticSystem &system)
+  {
+    const DoFHandler<3> &coarse   = system.field().dof_handler();
+    DisplacementField   &enriched = model.system().field();
+    const DoFHandler<3> &rich     = enriched.dof_handler();
+    if (interpolation.m() == 0)
+      {
+        interpolation.reinit(rich.get_fe().n_dofs_per_cell(),
+                             coarse.get_fe().n_dofs_per_cell());
+        FETools::get_interpolation_matrix(coarse.get_fe(),
+                                          rich.get_fe(),
+                                          interpolation);
+      }
+
+    TrilinosWrappers::MPI::Vector        u      = enriched.owned_solution();
+    const IndexSet                      &owned  = enriched.locally_owned_dofs();
+    const auto                          &source = system.field().solution();
+    Vector<double>                       coarse_values(interpolation.n());
+    Vector<double>                       rich_values(interpolation.m());
+    std::vector<types::global_dof_index> rich_dofs(interpolation.m());
+    auto                                 rich_cell = rich.begin_active();
+    for (const auto &cell : coarse.active_cell_iterators())
+      {
+        AssertThrow(rich_cell != rich.end() &&
+                      cell->center().distance(rich_cell->center()) <=
+                        1e-9 * cell->diameter(),
+                    ExcInternalError("the enriched mesh differs from the "
+                                     "scene's"));
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_values(source, coarse_values);
+            interpolation.vmult(rich_values, coarse_values);
+            rich_cell->get_dof_indices(rich_dofs);
+            for (unsigned int i = 0; i < rich_dofs.size(); ++i)
+              if (owned.is_element(rich_dofs[i]))
+                u[rich_dofs[i]] = rich_values[i];
+          }
+        ++rich_cell;
+      }
+    u.compress(VectorOperation::insert);
+    enriched.set_solution(u);
+  }
+
+
+  double
+  EnrichedDepthEstimate::depth_change(const ElasticSystem &system,
+                                      const double         force)
+  {
+    interpolate_state(system);
+    // the prescribed values and ties (and hanging nodes) as the scene's
+    loading.apply(force);
+    const double        depth      = loading.depth(force);
+    const LinearSolver &solver     = model.system().tangent_system().solver();
+    const unsigned int  indefinite = solver.indefinite_factorizations();
+    failure.clear();
+    try
+      {
+        solve_linear(model.system());
+      }
+    catch (const ExceptionBase &error)
+      {
+        // the estimate's solve is not the scene's: the scene goes on
+        std::ostringstream message;
+        error.print_info(message);
+        failure = "its Q2-P0 solve failed: " + message.str();
+        while (!failure.empty() && std::isspace(failure.back()))
+          failure.pop_back();
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+    // a step along negative curvature is no estimate of anything
+    if (solver.indefinite_factorizations() > indefinite)
+      {
+        failure = "the Q2-P0 tangent at this state is indefinite";
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+    return loading.depth(force) - depth;
+  }
+} // namespace ssc
