@@ -17,9 +17,12 @@ Writes benchmarks/forearm/results/newton_path.csv (one row per variant:
 Newton and CG iterations, indefinite tangents, trust-region steps, wall
 time, depths at the seven forces or forces at the seven depths).
 
-    /usr/bin/python3 benchmarks/forearm/newton_path.py
+    /usr/bin/python3 benchmarks/forearm/newton_path.py ["variant" ...]
+
+With arguments only the variants of those labels are run, and the CSV's
+other rows are kept.
 """
-import os, sys
+import csv, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
@@ -39,6 +42,8 @@ VARIANTS = [
       "Nonlinear solver/Growth factor=1"]),
     ("contact penalty 100", ["Punch/Contact penalty=100"]),
     ("contact penalty 30", ["Punch/Contact penalty=30"]),
+    ("contact penalty 3000", ["Punch/Contact penalty=3000"]),
+    ("contact penalty 10000", ["Punch/Contact penalty=10000"]),
     ("depth control to 11.05 mm in 7 steps", DEPTH_CONTROL),
     ("volumetric stabilisation 0.02",
      ["Elasticity/Volumetric stabilisation=0.02"]),
@@ -63,9 +68,17 @@ def log_counts(log):
                                                 for line in steps))
 
 
-def measure():
+def measure(only=()):
+    """Runs the variants (those whose label is in only, if given) and
+    writes their rows, keeping the CSV's rows of the others."""
+    kept = []
+    if only and os.path.exists(CSV):
+        with open(CSV) as f:
+            kept = [r for r in csv.DictReader(f) if r["variant"] not in only]
     rows = []
     for label, overrides in VARIANTS:
+        if only and label not in only:
+            continue
         with ssc_runner.scratch() as tmp:
             result = ssc_runner.run(SCENE, COMMON + overrides, tmp, "run",
                                     timeout=1800)
@@ -83,8 +96,12 @@ def measure():
                    depths_mm=" ".join(f"{d:.4f}" for d in s["depth_mm"]))
         print(row, flush=True)
         rows.append(row)
-    ssc_runner.write_rows(CSV, rows)
+    # in the order of VARIANTS
+    order = [label for label, _ in VARIANTS]
+    every = sorted(kept + rows, key=lambda r: order.index(r["variant"])
+                   if r["variant"] in order else len(order))
+    ssc_runner.write_rows(CSV, every)
 
 
 if __name__ == "__main__":
-    measure()
+    measure(sys.argv[1:])
