@@ -3,10 +3,10 @@
 #include <deal.II/base/utilities.h>
 
 #include <chrono>
-#include <sstream>
 #include <thread>
 
 #include <ssc/application.h>
+#include <ssc/base/user_message.h>
 #include <ssc/identification/identification_scene.h>
 #include <ssc/scenes/geometry_scene.h>
 #include <ssc/scenes/growth_scene.h>
@@ -29,29 +29,6 @@ namespace ssc
       "-s overrides one parameter and may repeat, e.g.\n"
       "  ssc prm/punch.prm -s \"Mesh/Global refinements=1\"\n";
 
-    /// The "additional information" of a deal.II exception, without the
-    /// source location that is meaningless to a user.
-    std::string
-    user_message(const ExceptionBase &e)
-    {
-      std::ostringstream info;
-      e.print_info(info);
-      std::string text = Utilities::trim(info.str());
-      // collapse deal.II's indented multi-line layout into one paragraph
-      std::string collapsed;
-      bool        space = false;
-      for (const char c : text)
-        if (c == '\n' || c == ' ' || c == '\t')
-          space = true;
-        else
-          {
-            if (space && !collapsed.empty())
-              collapsed += ' ';
-            collapsed += c;
-            space = false;
-          }
-      return collapsed;
-    }
 
     /**
      * Reports @p message and returns the exit status 1. An error raised on

@@ -2,10 +2,9 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <cctype>
 #include <limits>
-#include <sstream>
 
+#include <ssc/base/user_message.h>
 #include <ssc/scenes/enriched_depth_estimate.h>
 
 namespace ssc
@@ -138,11 +137,7 @@ namespace ssc
     catch (const ExceptionBase &error)
       {
         // the estimate's solve is not the scene's: the scene goes on
-        std::ostringstream message;
-        error.print_info(message);
-        failure = "its Q2-P0 solve failed: " + message.str();
-        while (!failure.empty() && std::isspace(failure.back()))
-          failure.pop_back();
+        failure = "its Q2-P0 solve failed: " + user_message(error);
         return std::numeric_limits<double>::quiet_NaN();
       }
     // a step along negative curvature is no estimate of anything
