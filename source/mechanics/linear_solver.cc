@@ -155,8 +155,9 @@ namespace ssc
         if (gmg.initialize(matrix, constraints.homogeneous()))
           return;
         if (progress != nullptr)
-          *progress << "  The tangent is not positive definite on a line "
-                       "of the mesh: AMG instead of the V-cycle"
+          *progress << "  A line block of the tangent is not positive "
+                       "definite, or its coarse matrix is singular: AMG "
+                       "instead of the V-cycle"
                     << std::endl;
         setup_amg(matrix);
         return;

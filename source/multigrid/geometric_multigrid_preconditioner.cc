@@ -5,8 +5,6 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/precondition.h>
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -17,6 +15,7 @@
 #include <vector>
 
 #include <ssc/linear_algebra/factor_operator.h>
+#include <ssc/linear_algebra/ldlt_preconditioner.h>
 #include <ssc/multigrid/distributed_line_blocks.h>
 #include <ssc/multigrid/galerkin_hierarchy.h>
 #include <ssc/multigrid/geometric_multigrid_preconditioner.h>
@@ -106,9 +105,9 @@ namespace ssc
   public:
     VCycle(const DoFHandler<3> &field_dofs, const Epetra_Map &map);
 
-    /// The level matrices, smoothers and coarse solve for @p matrix;
+    /// The level matrices, smoothers and coarse factor for @p matrix;
     /// false on every process if a line block of a level matrix is not
-    /// positive definite on one.
+    /// positive definite on one, or if the coarsest matrix is singular.
     bool
     build(const TrilinosWrappers::SparseMatrix &matrix,
           const AffineConstraints<double>      &constraints);
@@ -159,12 +158,13 @@ namespace ssc
     /// The field's constrained DoFs the finest prolongation is made for.
     IndexSet finest_constrained;
 
-    std::vector<TrilinosWrappers::SparseMatrix>     coarse_matrices;
-    std::vector<std::unique_ptr<EpetraMatrixView>>  level_matrices;
-    std::vector<std::unique_ptr<Smoother>>          smoothers;
-    SolverControl                                   coarse_control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> coarse;
-    mutable std::vector<VectorType>                 defect, solution, residual;
+    std::vector<TrilinosWrappers::SparseMatrix>    coarse_matrices;
+    std::vector<std::unique_ptr<EpetraMatrixView>> level_matrices;
+    std::vector<std::unique_ptr<Smoother>>         smoothers;
+    /// the coarsest level's factor (MUMPS L D L^T, on all processes); its
+    /// symbolic analysis is kept while the coarse pattern stays the same
+    LdltPreconditioner              coarse;
+    mutable std::vector<VectorType> defect, solution, residual;
   };
 
 
@@ -272,7 +272,7 @@ namespace ssc
   {
     for (auto &smoother : smoothers)
       smoother.reset();
-    coarse.reset();
+    coarse.clear();
 
     IndexSet constrained(field_dofs.n_dofs());
     for (const auto dof : owned[finest])
@@ -326,9 +326,8 @@ namespace ssc
           smoother.reset();
         return false;
       }
-    coarse = std::make_unique<TrilinosWrappers::SolverDirect>(coarse_control);
-    coarse->initialize(coarse_matrices[0]);
-    return true;
+    // a numerically singular coarse matrix: no V-cycle for this tangent
+    return coarse.initialize(coarse_matrices[0]);
   }
 
 
@@ -338,7 +337,7 @@ namespace ssc
   {
     if (level == 0)
       {
-        coarse->solve(solution[0], defect[0]);
+        coarse.vmult(solution[0], defect[0]);
         return;
       }
     smoothers[level]->vmult(solution[level], defect[level]);
