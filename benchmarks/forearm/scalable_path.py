@@ -28,11 +28,10 @@ import csv, os, sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import ssc_runner  # noqa: E402
+# the scene without fields, section or profile, and how its log is read
+from newton_path import COMMON, SCENE, log_counts  # noqa: E402
 
-SCENE = os.path.join(ssc_runner.ROOT, "prm", "forearm_indentation.prm")
 CSV = os.path.join(HERE, "results", "scalable_path.csv")
-COMMON = ["Run/Write fields=false", "Punch/Section=false",
-          "Punch/Profile length=0", "Punch/Depth uncertainty="]
 REFINED = ["Mesh/O-grid/Cells around=8", "Mesh/O-grid/Edge cell size=0.4",
            "Mesh/O-grid/Radial grading=1.96", "Mesh/Global refinements=1"]
 GMG = ["Elasticity/Linear solver/Preconditioner=gmg"]
@@ -65,7 +64,7 @@ def measure(repetitions):
                 solve_s=round(timings.get("solve", 0.), 1),
                 newton_iterations=solver["newton_iterations"],
                 krylov_iterations=solver["linear_iterations"],
-                indefinite_tangents=log.count("not positive definite ("),
+                indefinite_tangents=log_counts(log)["indefinite_tangents"],
                 vcycle_fallbacks=log.count("AMG instead of the V-cycle"),
                 depths_mm=" ".join(f"{d:.4f}" for d in s["depth_mm"]))
             print(row, flush=True)
