@@ -11,50 +11,23 @@ namespace ssc
 {
   namespace
   {
-    /// The scene's parameters with the next richer discretisation and no
-    /// output or estimate of its own.
+    /// The next richer discretisation of @p parameters' Q1 scene: Q2-P0.
     std::vector<std::string>
     enriched_overrides(const Parameters &parameters)
     {
-      std::vector<std::string> overrides = parameters.overrides();
-      overrides.emplace_back("Elasticity/Degree=" +
-                             std::to_string(parameters.elasticity.degree + 1));
+      // Parameters::check_formulation() allows Q1 scenes only
+      Assert(parameters.elasticity.degree == 1, ExcInternalError());
       // Q2-P0: the dilatation space of the scene (Q1-P0) kept, so that the
       // richer spaces contain the scene's; with P1 the cell-wise variation
       // of J that Q1-P0 leaves free would carry bulk energy at once
-      overrides.emplace_back("Elasticity/Formulation=mean dilatation");
-      overrides.emplace_back("Run/Write fields=false");
-      overrides.emplace_back("Punch/Depth error estimate=none");
-      return overrides;
-    }
-
-
-    /// @p parameters after reading @p scene's file with the enriched
-    /// overrides (a Parameters object is neither copied nor moved).
-    const Parameters &
-    read_enriched(Parameters &parameters, const Parameters &scene)
-    {
-      // Parameters::check_formulation() allows Q1 scenes only
-      Assert(scene.elasticity.degree == 1, ExcInternalError());
-      parameters.read(scene.file(), enriched_overrides(scene));
-      return parameters;
+      return {"Elasticity/Degree=2", "Elasticity/Formulation=mean dilatation"};
     }
   } // namespace
 
 
   EnrichedDepthEstimate::EnrichedDepthEstimate(const Parameters &parameters,
                                                const MPI_Comm mpi_communicator)
-    : silent(std::cout, false)
-    , timer(mpi_communicator,
-            silent,
-            TimerOutput::never,
-            TimerOutput::wall_times)
-    , model(read_enriched(enriched_parameters, parameters),
-            mpi_communicator,
-            timer,
-            silent,
-            silent)
-    , loading(enriched_parameters, model.system(), timer, silent)
+    : enriched(parameters, enriched_overrides(parameters), mpi_communicator)
   {}
 
 
@@ -70,16 +43,16 @@ namespace ssc
   types::global_dof_index
   EnrichedDepthEstimate::n_dofs()
   {
-    return model.system().field().dof_handler().n_dofs();
+    return enriched.system().field().dof_handler().n_dofs();
   }
 
 
   void
   EnrichedDepthEstimate::interpolate_state(const ElasticSystem &system)
   {
-    const DoFHandler<3> &coarse   = system.field().dof_handler();
-    DisplacementField   &enriched = model.system().field();
-    const DoFHandler<3> &rich     = enriched.dof_handler();
+    const DoFHandler<3> &coarse     = system.field().dof_handler();
+    DisplacementField   &rich_field = enriched.system().field();
+    const DoFHandler<3> &rich       = rich_field.dof_handler();
     if (interpolation.m() == 0)
       {
         interpolation.reinit(rich.get_fe().n_dofs_per_cell(),
@@ -89,11 +62,11 @@ namespace ssc
                                           interpolation);
       }
 
-    TrilinosWrappers::MPI::Vector        u      = enriched.owned_solution();
-    const IndexSet                      &owned  = enriched.locally_owned_dofs();
-    const auto                          &source = system.field().solution();
-    Vector<double>                       coarse_values(interpolation.n());
-    Vector<double>                       rich_values(interpolation.m());
+    TrilinosWrappers::MPI::Vector u      = rich_field.owned_solution();
+    const IndexSet               &owned  = rich_field.locally_owned_dofs();
+    const auto                   &source = system.field().solution();
+    Vector<double>                coarse_values(interpolation.n());
+    Vector<double>                rich_values(interpolation.m());
     std::vector<types::global_dof_index> rich_dofs(interpolation.m());
     auto                                 rich_cell = rich.begin_active();
     for (const auto &cell : coarse.active_cell_iterators())
@@ -115,7 +88,7 @@ namespace ssc
         ++rich_cell;
       }
     u.compress(VectorOperation::insert);
-    enriched.set_solution(u);
+    rich_field.set_solution(u);
   }
 
 
@@ -125,14 +98,15 @@ namespace ssc
   {
     interpolate_state(system);
     // the prescribed values and ties (and hanging nodes) as the scene's
+    PunchLoading &loading = enriched.loading();
     loading.apply(force);
-    const double        depth      = loading.depth(force);
-    const LinearSolver &solver     = model.system().tangent_system().solver();
+    const double        depth  = loading.depth(force);
+    const LinearSolver &solver = enriched.system().tangent_system().solver();
     const unsigned int  indefinite = solver.indefinite_factorizations();
     failure.clear();
     try
       {
-        solve_linear(model.system());
+        solve_linear(enriched.system());
       }
     catch (const ExceptionBase &error)
       {

@@ -1,17 +1,13 @@
 #ifndef ssc_scenes_enriched_depth_estimate_h
 #define ssc_scenes_enriched_depth_estimate_h
 
-#include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/timer.h>
-
 #include <deal.II/lac/full_matrix.h>
 
 #include <string>
 
 #include <ssc/mechanics/elastic_system.h>
-#include <ssc/scenes/mechanics_model.h>
+#include <ssc/scenes/companion_model.h>
 #include <ssc/scenes/parameters.h>
-#include <ssc/scenes/punch_loading.h>
 
 namespace ssc
 {
@@ -47,8 +43,7 @@ namespace ssc
   {
   public:
     /// The richer model of the scene of @p parameters (Elasticity/Degree
-    /// 1, force control), built quietly on @p mpi_communicator; its own
-    /// phases are timed apart from the scene's.
+    /// 1, force control), built quietly on @p mpi_communicator.
     EnrichedDepthEstimate(const Parameters &parameters,
                           const MPI_Comm    mpi_communicator);
 
@@ -81,11 +76,7 @@ namespace ssc
     void
     interpolate_state(const ElasticSystem &system);
 
-    Parameters         enriched_parameters;
-    ConditionalOStream silent;
-    TimerOutput        timer;
-    MechanicsModel     model;
-    PunchLoading       loading;
+    CompanionModel enriched;
     /// Q1 cell values to Q2 cell values (vector-valued elements).
     FullMatrix<double> interpolation;
     std::string        failure;
