@@ -345,14 +345,12 @@ main(int argc, char **argv)
          "Mesh/Symmetry=quarter",
          "-s",
          "Layer stack/fat/Thickness=4 + 0.05*x"});
-  check("a depth uncertainty per force with the wrong count",
+  check("a coarser-mesh depth error estimate without refinement levels",
         valid_stack,
         {"-s",
          "Punch/Control=force",
          "-s",
-         "Punch/Forces=0.1, 0.2",
-         "-s",
-         "Punch/Depth uncertainty=0.01"});
+         "Punch/Depth error estimate=coarser mesh"});
   check("a depth error estimate under displacement control",
         valid_stack,
         {"-s",

@@ -51,11 +51,12 @@ OGRID = ["Mesh/Layout=o-grid", "Mesh/O-grid/Cells around=8",
          "Mesh/O-grid/Grade in depth=true", "Elasticity/Degree=2",
          "Elasticity/Formulation=mixed", "Microstructure/Lobules=false",
          "Microstructure/Ligaments/Enabled=false", "Punch/Forces=0.35",
-         "Punch/Depth uncertainty=0",
          # the scene's punch as it was when this was measured: the whole
          # face bonded, the mesh circle at its radius, contact factor 100
          "Mesh/Fitted circle radius=2.5", "Punch/Tied region=whole face",
-         "Punch/Contact penalty=100"]
+         "Punch/Contact penalty=100",
+         # the scene's mesh had no refinement level and no estimate then
+         "Mesh/Global refinements=0", "Punch/Depth error estimate=none"]
 CASES = {"hard": (os.path.join(HERE, "hard_cases.prm"), []),
          "forearm": (os.path.join(ROOT, "prm", "forearm_indentation_linear.prm"),
                      FOREARM),

@@ -22,13 +22,15 @@ import csv, os, sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import ssc_runner  # noqa: E402
+# the scene's discretisation when this was measured
+from newton_path import SCENE_UNTIL_2026_12_06  # noqa: E402
 
 SCENE = os.path.join(ssc_runner.ROOT, "prm", "forearm_indentation.prm")
 OUT = os.path.join(HERE, "results")
 CSV = os.path.join(OUT, "error_estimate.csv")
 CONVERGENCE = os.path.join(OUT, "forearm_convergence.csv")
 COMMON = ["Run/Write fields=false", "Punch/Section=false",
-          "Punch/Profile length=0", "Punch/Depth uncertainty=",
+          "Punch/Profile length=0", *SCENE_UNTIL_2026_12_06,
           "Punch/Depth error estimate=enriched degree"]
 # (label, o-grid: cells around, radial size at the circle, grading), as in
 # forearm_finite_strain.py's convergence study

@@ -22,8 +22,11 @@ that reached that force plus that run's distance from the next finest (the
 reference's own error, bounded by how much the two finest discretisations
 disagree); where the finest run did not reach a force, the largest
 relative uncertainty of the forces it reached times the scene's depth
-(extrapolated, and printed as such). It is what Punch/Depth uncertainty
-in the scene's prm holds.
+(extrapolated, and printed as such). Until 2026-12-06 the scene's prm
+held these as typed error bars (Punch/Depth uncertainty); the scene now
+computes its own (Punch/Depth error estimate, depth_error_effectivity.py).
+Every study here is made on the scene's discretisation as it was then
+(BASE: 12 around, 0.2 mm, grading 1.4, no refinement level, Cholesky).
 
 seeds: the scene with lobule seeds 1..N (default 10): mean and standard
 deviation of the depth at each force and of the stiffness.
@@ -71,7 +74,13 @@ OUT = os.path.join(HERE, "results")
 RUNS = os.path.join(OUT, "runs")
 RANKS = 1
 BASE = {"Run/Write fields": "false", "Punch/Section": "false",
-        "Punch/Profile length": "0"}
+        "Punch/Profile length": "0",
+        # the scene's discretisation until 2026-12-06, which the studies
+        # here were made on (the convergence cases override the o-grid)
+        "Mesh/O-grid/Cells around": "12", "Mesh/O-grid/Edge cell size": "0.2",
+        "Mesh/O-grid/Radial grading": "1.4", "Mesh/Global refinements": "0",
+        "Elasticity/Linear solver/Preconditioner": "cholesky",
+        "Punch/Depth error estimate": "none"}
 Q1 = {"Elasticity/Degree": "1", "Elasticity/Formulation": "mean dilatation"}
 Q2P1 = {"Elasticity/Degree": "2", "Elasticity/Formulation": "mixed",
         "Embedded/Septa/Quadrature points": "2"}
@@ -110,9 +119,7 @@ HERLIN_SETUP = {"Elasticity/Degree": "1",
                 "Mesh/Fitted circle radius": "0",
                 # as when it was first measured (2026-12-04)
                 "Punch/Contact penalty": "100",
-                "Embedded/Septa/Quadrature points": "2",
-                # the scene's error bars are not this set-up's
-                "Punch/Depth uncertainty": ""}
+                "Embedded/Septa/Quadrature points": "2"}
 for layer in ["skin", "SAT", "SM", "DAT", "deep"]:
     HERLIN_SETUP[f"Layer stack/{layer}/Material model"] = "corotational"
 
@@ -274,6 +281,7 @@ def uncertainty(contact, forces, rows):
                   f"(extrapolated: {max(relative):.1%} of the depth)")
     print(f"{contact}: Depth uncertainty = " +
           ", ".join("?" if v is None else f"{v:.2f}" for v in values))
+    return values
 
 
 def seeds(n):
@@ -364,8 +372,7 @@ FAT_NU = {f"Layer stack/{layer}/Poisson's ratio": "0.4999"
 EVERY_LAYER_NU = {f"Layer stack/{layer}/Poisson's ratio": "0.4999"
                   for layer in ["skin", "SAT", "SM", "DAT", "deep"]}
 Q2P1_TO_1N = {**Q2P1, **ogrid(8, 0.3, 1.6),
-              "Punch/Forces": "0.35, 0.5, 0.75, 1.0",
-              "Punch/Depth uncertainty": ""}
+              "Punch/Forces": "0.35, 0.5, 0.75, 1.0"}
 
 
 def poisson():
@@ -432,8 +439,13 @@ def plot():
     import matplotlib.pyplot as plt
     with open(os.path.join(OUT, "forearm_convergence.csv")) as f:
         rows = list(csv.DictReader(f))
-    uncertainty = scene_list("Depth uncertainty")
+    for r in rows:
+        for key in r:
+            if key == "dofs" or key.startswith("depth_mm"):
+                r[key] = float(r[key]) if r[key] != "" else ""
     forces = scene_forces()
+    bars = uncertainty("bonded", forces,
+                       [r for r in rows if r["contact"] == "bonded"])
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
     for ax, contact in zip(axes, ["bonded", "frictionless"]):
         for f, colour in [(0.35, "tab:blue"), (1.0, "tab:orange"),
@@ -448,9 +460,10 @@ def plot():
                                 label=f"{label}, {f} N")
             scene = [r for r in rows if r["contact"] == contact and
                      (r["discretisation"], r["mesh"]) == SCENE_CASE]
-            if contact == "bonded" and scene and scene[0][key]:
-                ax.errorbar(float(scene[0]["dofs"]), float(scene[0][key]),
-                            yerr=uncertainty[forces.index(f)], color=colour,
+            if contact == "bonded" and scene and scene[0][key] != "" and \
+                    bars[forces.index(f)] is not None:
+                ax.errorbar(scene[0]["dofs"], scene[0][key],
+                            yerr=bars[forces.index(f)], color=colour,
                             capsize=4, lw=1)
         ax.set_xlabel("DoFs")
         ax.set_title(f"the real indenter, {contact} flat face (scene: Q1-P0 "

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Where the main scene's Newton iterations go, and what makes its tangents
+"""Where the main scene's Newton iterations go (on its discretisation until
+2026-12-06, SCENE_UNTIL_2026_12_06), and what makes its tangents
 indefinite: prm/forearm_indentation.prm to 1.8 N in variants that change
 one thing each (the predictor, the size of the increments, the contact
 penalty, depth instead of force control, the volumetric stabilisation, the
@@ -30,8 +31,17 @@ import ssc_runner  # noqa: E402
 
 SCENE = os.path.join(ssc_runner.ROOT, "prm", "forearm_indentation.prm")
 CSV = os.path.join(HERE, "results", "newton_path.csv")
+# the scene's discretisation until 2026-12-06, which these studies (and
+# scalable_path.py's "scene" row, scene_speed.py, error_estimate.py,
+# forearm_finite_strain.py) were made on: 12 around, 0.2 mm, grading 1.4,
+# no refinement level, every tangent factorised, no error estimate
+SCENE_UNTIL_2026_12_06 = [
+    "Mesh/O-grid/Cells around=12", "Mesh/O-grid/Edge cell size=0.2",
+    "Mesh/O-grid/Radial grading=1.4", "Mesh/Global refinements=0",
+    "Elasticity/Linear solver/Preconditioner=cholesky",
+    "Punch/Depth error estimate=none"]
 COMMON = ["Run/Write fields=false", "Punch/Section=false",
-          "Punch/Profile length=0", "Punch/Depth uncertainty="]
+          "Punch/Profile length=0"] + SCENE_UNTIL_2026_12_06
 DEPTH_CONTROL = ["Punch/Control=displacement", "Punch/Depth=11.05",
                  "Punch/Load steps=7"]
 VARIANTS = [

@@ -17,6 +17,8 @@ import csv, os, sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import ssc_runner  # noqa: E402
+# the scene's discretisation when this was measured
+from newton_path import SCENE_UNTIL_2026_12_06  # noqa: E402
 
 ROOT = ssc_runner.ROOT
 SCENE = os.path.join(ROOT, "prm", "forearm_indentation.prm")
@@ -39,7 +41,7 @@ def run(septa_points, threads):
         result = ssc_runner.run(
             SCENE, ["Run/Write fields=false", "Punch/Section=false",
                     "Punch/Profile length=0", f"Punch/Forces={FORCES}",
-                    "Punch/Depth uncertainty=",
+                    *SCENE_UNTIL_2026_12_06,
                     f"Embedded/Septa/Quadrature points={septa_points}"],
             tmp, "run", env=env)
         if not result.ok:

@@ -212,8 +212,6 @@ namespace ssc
     summary["layer_strain_under_centre_per_step"] = strains;
     summary["force_N"]                            = result.forces;
     summary["depth_mm"]                           = result.depths;
-    if (!punch.depth_uncertainty.empty())
-      summary["depth_uncertainty_mm"] = punch.depth_uncertainty;
     if (!result.depth_error_estimates.empty())
       {
         std::vector<double> size;

@@ -6,6 +6,7 @@
 
 #include <ssc/output/field_output.h>
 #include <ssc/output/run_output.h>
+#include <ssc/scenes/coarser_mesh_depth_estimate.h>
 #include <ssc/scenes/enriched_depth_estimate.h>
 #include <ssc/scenes/indentation_scene.h>
 #include <ssc/scenes/mechanics_model.h>
@@ -61,9 +62,28 @@ namespace ssc
                       << std::endl;
       }
 
+    std::unique_ptr<CoarserMeshDepthEstimate> coarser_mesh;
+    if (parameters.punch.depth_error_estimate ==
+        DepthErrorEstimate::coarser_mesh)
+      {
+        TimerOutput::Scope t(scene.timer(), "error estimate");
+        coarser_mesh =
+          std::make_unique<CoarserMeshDepthEstimate>(parameters,
+                                                     mpi_communicator);
+        scene.pcout() << "Depth error estimate: the path on the mesh with "
+                         "one global refinement fewer ("
+                      << coarser_mesh->n_dofs() << " DoFs)" << std::endl;
+        coarser_mesh->solve(scene.pcout());
+      }
+
     const std::vector<double> loads   = parameters.punch.loads();
     const auto                on_step = [&](const unsigned int step) {
       record.record(step, loads[step]);
+      if (coarser_mesh)
+        record.record_depth_error(coarser_mesh->error(step,
+                                                      record.last_depth()),
+                                  CoarserMeshDepthEstimate::method(),
+                                  coarser_mesh->n_dofs());
       if (depth_error)
         {
           TimerOutput::Scope t(scene.timer(), "error estimate");

@@ -297,7 +297,8 @@ namespace ssc
                            "Newton's method, so give at least one layer a "
                            "nonlinear Material model (a finite-strain "
                            "law)."));
-    AssertThrow(punch.depth_error_estimate == DepthErrorEstimate::none ||
+    AssertThrow(punch.depth_error_estimate !=
+                    DepthErrorEstimate::enriched_degree ||
                   (run.scene == SceneKind::indentation &&
                    punch.control == PunchControl::force &&
                    elasticity.degree == 1),
@@ -306,6 +307,17 @@ namespace ssc
                            "a Q1 indentation by a step of Q2-P0: it needs "
                            "Run/Scene = indentation, Punch/Control = force "
                            "and Elasticity/Degree = 1."));
+    AssertThrow(punch.depth_error_estimate !=
+                    DepthErrorEstimate::coarser_mesh ||
+                  (run.scene == SceneKind::indentation &&
+                   punch.control == PunchControl::force &&
+                   mesh.global_refinements >= 1),
+                ExcMessage("Punch/Depth error estimate = coarser mesh "
+                           "estimates the depth at the prescribed forces of "
+                           "an indentation from a second path on the mesh "
+                           "with one global refinement fewer: it needs "
+                           "Run/Scene = indentation, Punch/Control = force "
+                           "and Mesh/Global refinements >= 1."));
     AssertThrow(!punch.edge_contact || nonlinear,
                 ExcMessage("Punch/Edge contact needs Newton's method: give "
                            "at least one layer a nonlinear Material model "

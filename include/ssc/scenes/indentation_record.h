@@ -73,6 +73,13 @@ namespace ssc
       return result.forces.back();
     }
 
+    /// The depth (mm) of the last recorded step.
+    double
+    last_depth() const
+    {
+      return result.depths.back();
+    }
+
     /// The progress line of the last recorded step.
     void
     print_step(const unsigned int step, const unsigned int n_steps) const;

@@ -61,19 +61,23 @@ namespace ssc
   }
 
   /// How the run estimates the discretisation error of the depth at each
-  /// force (EnrichedDepthEstimate): not at all, or by one Newton step of
-  /// the next richer element on the same mesh.
+  /// force: not at all, by one Newton step of the next richer element on
+  /// the same mesh (EnrichedDepthEstimate), or by Richardson from a second
+  /// path on the mesh with one global refinement fewer
+  /// (CoarserMeshDepthEstimate).
   enum class DepthErrorEstimate
   {
     none,
-    enriched_degree
+    enriched_degree,
+    coarser_mesh
   };
 
-  constexpr std::array<std::pair<DepthErrorEstimate, const char *>, 2>
+  constexpr std::array<std::pair<DepthErrorEstimate, const char *>, 3>
   enum_table(DepthErrorEstimate)
   {
     return {{{DepthErrorEstimate::none, "none"},
-             {DepthErrorEstimate::enriched_degree, "enriched degree"}}};
+             {DepthErrorEstimate::enriched_degree, "enriched degree"},
+             {DepthErrorEstimate::coarser_mesh, "coarser mesh"}}};
   }
 
   /// The punch's flat face: a disk (the forearm indenters) or a rectangle
@@ -103,7 +107,6 @@ namespace ssc
     double              depth      = 0.5;
     unsigned int        load_steps = 1;
     std::vector<double> forces     = {0.35, 0.5, 0.75, 1.0, 1.25, 1.5, 1.8};
-    std::vector<double> depth_uncertainty;
     DepthErrorEstimate  depth_error_estimate = DepthErrorEstimate::none;
     double              profile_length       = 30;
     unsigned int        profile_points       = 301;

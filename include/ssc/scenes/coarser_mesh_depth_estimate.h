@@ -1,0 +1,85 @@
+#ifndef ssc_scenes_coarser_mesh_depth_estimate_h
+#define ssc_scenes_coarser_mesh_depth_estimate_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+
+#include <string>
+#include <vector>
+
+#include <ssc/scenes/companion_model.h>
+#include <ssc/scenes/parameters.h>
+
+namespace ssc
+{
+  /**
+   * The discretisation error of the punch's depth at each prescribed
+   * force, computed by the run from a second solve on the mesh with one
+   * global refinement fewer (Punch/Depth error estimate = coarser mesh):
+   * the same patch, layers, lobules, septa, ligaments, ties and contact,
+   * every cell twice as large. With d_h the scene's depth and d_2h the
+   * coarser mesh's, Richardson's estimate of the error of d_h is
+   *
+   *   e_h = (d_h - d_2h) / (2^p - 1).
+   *
+   * Why this estimate: at finite strain with contact, the one-step
+   * estimates in a richer space meet indefinite tangents (Q1 equilibria
+   * are saddles of the richer energy; EnrichedDepthEstimate), whereas a
+   * converged solve on a coarser nested mesh is cheap (an eighth of the
+   * cells) and needs nothing the scene does not have. Why p = 1.5 and not
+   * the observed order: a depth at the singular line where the punch's
+   * tie ends converges with an order between 1 (the singularity) and 2
+   * (the energy's rate for smooth problems); the forearm's convergence
+   * study observed 1.3-1.6. With p = 1.5 the estimate is within a factor
+   * 0.55-1.64 of the true error for any order between 1 and 2; the
+   * observed order needs a third mesh (benchmarks/forearm/).
+   */
+  class CoarserMeshDepthEstimate
+  {
+  public:
+    /// The coarser model of @p parameters (force control, Mesh/Global
+    /// refinements >= 1), built on @p mpi_communicator. Where the scene's
+    /// preconditioner is the V-cycle and the coarser mesh has no level
+    /// below it, its tangents are factorised (ldlt, any number of ranks).
+    CoarserMeshDepthEstimate(const Parameters &parameters,
+                             const MPI_Comm    mpi_communicator);
+
+    /// Solves the coarser mesh's load path through the scene's forces and
+    /// reports each depth on @p pcout (collective). If the path fails, the
+    /// forces it did not reach have no estimate (failure_reason() says
+    /// why).
+    void
+    solve(ConditionalOStream &pcout);
+
+    /// The estimated error (mm, the converged depth minus @p depth) of the
+    /// scene's depth @p depth at the force of step @p step; NaN where the
+    /// coarser path did not reach it.
+    double
+    error(const unsigned int step, const double depth) const;
+
+    /// Why the coarser path stopped (empty if it reached every force).
+    const std::string &
+    failure_reason() const
+    {
+      return failure;
+    }
+
+    /// What the estimate is, for summary.json and the plot's legend.
+    static std::string
+    method();
+
+    /// The coarser mesh's DoFs.
+    types::global_dof_index
+    n_dofs();
+
+    /// The convergence order p the estimate assumes (see the class).
+    static constexpr double assumed_order = 1.5;
+
+  private:
+    CompanionModel      coarser;
+    std::vector<double> depths;
+    std::string         failure;
+  };
+} // namespace ssc
+
+#endif
