@@ -20,7 +20,9 @@ namespace ssc
       // Q2-P0: the dilatation space of the scene (Q1-P0) kept, so that the
       // richer spaces contain the scene's; with P1 the cell-wise variation
       // of J that Q1-P0 leaves free would carry bulk energy at once
-      return {"Elasticity/Degree=2", "Elasticity/Formulation=mean dilatation"};
+      return {"Elasticity/Degree=" +
+                std::to_string(parameters.elasticity.degree + 1),
+              "Elasticity/Formulation=mean dilatation"};
     }
   } // namespace
 
