@@ -10,7 +10,7 @@ stress at the last load step, with layer interfaces, septa and punch).
 Writes force_depth.png, surface_profile.png and section.png into the run
 folder.
 """
-import csv, json, os, sys
+import csv, json, os, sys, textwrap
 
 import numpy as np
 import matplotlib
@@ -44,20 +44,20 @@ def main():
              f"k = {summary['stiffness_N_per_mm']:.4f} N/mm)")
     reach = depth.max()
     if "depth_uncertainty_mm" in summary:
-        # the bar is the size of the error (depth_uncertainty_method says
-        # how the run computed it; without it the prm gave it); the open
-        # marker is where the richer discretisation would put the depth
+        # the bar is the size of the error the run computed
+        # (depth_uncertainty_method says how); the open marker is where the
+        # estimate puts the converged depth
         error = np.array(summary["depth_uncertainty_mm"], dtype=float)
-        reach = (depth + error).max()
-        how = summary.get("depth_uncertainty_method",
-                          "from a convergence study, given in the prm")
+        reach = np.nanmax(depth + error)
+        how = summary["depth_uncertainty_method"]
         ax.errorbar(depth, force, xerr=error, fmt="o-", capsize=3,
-                    label=label + ";\nbars: discretisation error, " + how)
-        if "depth_error_estimate_mm" in summary:
-            richer = depth + np.array(summary["depth_error_estimate_mm"],
-                                      dtype=float)
-            ax.plot(richer, force, "o", mfc="none", color="tab:blue",
-                    label="depth after one Newton step of Q2-P0 from it")
+                    label=label + ";\n" + textwrap.fill(
+                        "bars: discretisation error, computed by the run: "
+                        + how, 60))
+        converged = depth + np.array(summary["depth_error_estimate_mm"],
+                                     dtype=float)
+        ax.plot(converged, force, "o", mfc="none", color="tab:blue",
+                label="the converged depth by that estimate")
     else:
         ax.plot(depth, force, "o-", label=label)
     if os.path.exists(REFERENCE):

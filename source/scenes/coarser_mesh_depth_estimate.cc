@@ -39,7 +39,7 @@ namespace ssc
 
 
   void
-  CoarserMeshDepthEstimate::solve(ConditionalOStream &pcout)
+  CoarserMeshDepthEstimate::prepare(ConditionalOStream &pcout)
   {
     const Parameters         &parameters = coarser.parameters();
     const std::vector<double> loads      = parameters.punch.loads();
@@ -49,7 +49,7 @@ namespace ssc
                              coarser.silent_stream(),
                              false);
     depths.clear();
-    failure.clear();
+    path_failure.clear();
     try
       {
         driver.run(
@@ -70,29 +70,34 @@ namespace ssc
     catch (const ExceptionBase &error)
       {
         // the estimate's path is not the scene's: the scene goes on
-        failure = "the coarser mesh's path stopped: " + user_message(error);
-        pcout << "  " << failure << std::endl;
+        path_failure =
+          "the coarser mesh's path stopped: " + user_message(error);
+        pcout << "  " << path_failure << std::endl;
       }
   }
 
 
   double
-  CoarserMeshDepthEstimate::error(const unsigned int step,
-                                  const double       depth) const
+  CoarserMeshDepthEstimate::error(const ElasticSystem &,
+                                  const unsigned int step,
+                                  const double,
+                                  const double depth)
   {
+    failure.clear();
     if (step >= depths.size())
-      return std::numeric_limits<double>::quiet_NaN();
+      {
+        failure = path_failure;
+        return std::numeric_limits<double>::quiet_NaN();
+      }
     return (depth - depths[step]) / (std::pow(2., assumed_order) - 1.);
   }
 
 
   std::string
-  CoarserMeshDepthEstimate::method()
+  CoarserMeshDepthEstimate::method() const
   {
-    return "Richardson from the mesh with one global refinement fewer (same "
-           "lobules, septa, ligaments): (depth - coarser depth) / (2^1.5 - 1), "
-           "an assumed order of 1.5, within a factor 0.55-1.64 of the error "
-           "for any order between 1 and 2";
+    return "Richardson from this mesh and the mesh with one refinement "
+           "fewer, assumed order 1.5";
   }
 
 

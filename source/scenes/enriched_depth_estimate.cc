@@ -34,11 +34,9 @@ namespace ssc
 
 
   std::string
-  EnrichedDepthEstimate::method()
+  EnrichedDepthEstimate::method() const
   {
-    return "one Newton step of Q2-P0 on the same mesh from the converged Q1 "
-           "state (the depth's change; dual-weighted residual with the "
-           "adjoint in Q2-P0); none where the Q2-P0 tangent is indefinite";
+    return "one Newton step of Q2-P0 from the converged Q1 state";
   }
 
 
@@ -95,8 +93,10 @@ namespace ssc
 
 
   double
-  EnrichedDepthEstimate::depth_change(const ElasticSystem &system,
-                                      const double         force)
+  EnrichedDepthEstimate::error(const ElasticSystem &system,
+                               const unsigned int,
+                               const double force,
+                               const double)
   {
     interpolate_state(system);
     // the prescribed values and ties (and hanging nodes) as the scene's

@@ -6,8 +6,7 @@
 
 #include <ssc/output/field_output.h>
 #include <ssc/output/run_output.h>
-#include <ssc/scenes/coarser_mesh_depth_estimate.h>
-#include <ssc/scenes/enriched_depth_estimate.h>
+#include <ssc/scenes/depth_error_estimator.h>
 #include <ssc/scenes/indentation_scene.h>
 #include <ssc/scenes/mechanics_model.h>
 #include <ssc/scenes/punch_loading.h>
@@ -50,47 +49,29 @@ namespace ssc
                                                      Kinematics::finite_strain);
     IndentationRecord record(parameters, model, loading, driver, scene.pcout());
 
-    std::unique_ptr<EnrichedDepthEstimate> depth_error;
-    if (parameters.punch.depth_error_estimate ==
-        DepthErrorEstimate::enriched_degree)
-      {
-        TimerOutput::Scope t(scene.timer(), "error estimate");
-        depth_error =
-          std::make_unique<EnrichedDepthEstimate>(parameters, mpi_communicator);
-        scene.pcout() << "Depth error estimate: a Q2-P0 step of "
-                      << depth_error->n_dofs() << " DoFs per force"
-                      << std::endl;
-      }
-
-    std::unique_ptr<CoarserMeshDepthEstimate> coarser_mesh;
-    if (parameters.punch.depth_error_estimate ==
-        DepthErrorEstimate::coarser_mesh)
-      {
-        TimerOutput::Scope t(scene.timer(), "error estimate");
-        coarser_mesh =
-          std::make_unique<CoarserMeshDepthEstimate>(parameters,
-                                                     mpi_communicator);
-        scene.pcout() << "Depth error estimate: the path on the mesh with "
-                         "one global refinement fewer ("
-                      << coarser_mesh->n_dofs() << " DoFs)" << std::endl;
-        coarser_mesh->solve(scene.pcout());
-      }
+    std::unique_ptr<DepthErrorEstimator> depth_error;
+    {
+      TimerOutput::Scope t(scene.timer(), "error estimate");
+      depth_error = DepthErrorEstimator::create(parameters, mpi_communicator);
+      if (depth_error)
+        {
+          scene.pcout() << "Depth error estimate: " << depth_error->method()
+                        << " (" << depth_error->n_dofs() << " DoFs)"
+                        << std::endl;
+          depth_error->prepare(scene.pcout());
+        }
+    }
 
     const std::vector<double> loads   = parameters.punch.loads();
     const auto                on_step = [&](const unsigned int step) {
       record.record(step, loads[step]);
-      if (coarser_mesh)
-        record.record_depth_error(coarser_mesh->error(step,
-                                                      record.last_depth()),
-                                  CoarserMeshDepthEstimate::method(),
-                                  coarser_mesh->n_dofs());
       if (depth_error)
         {
           TimerOutput::Scope t(scene.timer(), "error estimate");
-          record.record_depth_error(depth_error->depth_change(system,
-                                                              loads[step]),
-                                    EnrichedDepthEstimate::method(),
-                                    depth_error->n_dofs());
+          record.record_depth_error(
+            depth_error->error(system, step, loads[step], record.last_depth()),
+            depth_error->method(),
+            depth_error->n_dofs());
           if (!depth_error->failure_reason().empty())
             scene.pcout() << "  no depth error estimate at " << loads[step]
                           << " N: " << depth_error->failure_reason()

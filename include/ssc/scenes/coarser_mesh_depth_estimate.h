@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <ssc/scenes/companion_model.h>
+#include <ssc/scenes/depth_error_estimator.h>
 #include <ssc/scenes/parameters.h>
 
 namespace ssc
@@ -34,7 +35,7 @@ namespace ssc
    * 0.55-1.64 of the true error for any order between 1 and 2; the
    * observed order needs a third mesh (benchmarks/forearm/).
    */
-  class CoarserMeshDepthEstimate
+  class CoarserMeshDepthEstimate : public DepthErrorEstimator
   {
   public:
     /// The coarser model of @p parameters (force control, Mesh/Global
@@ -46,31 +47,23 @@ namespace ssc
 
     /// Solves the coarser mesh's load path through the scene's forces and
     /// reports each depth on @p pcout (collective). If the path fails, the
-    /// forces it did not reach have no estimate (failure_reason() says
-    /// why).
+    /// forces it did not reach have no estimate.
     void
-    solve(ConditionalOStream &pcout);
+    prepare(ConditionalOStream &pcout) override;
 
-    /// The estimated error (mm, the converged depth minus @p depth) of the
-    /// scene's depth @p depth at the force of step @p step; NaN where the
-    /// coarser path did not reach it.
+    /// (@p depth - the coarser depth at step @p step) / (2^p - 1); NaN
+    /// where the coarser path did not reach that step.
     double
-    error(const unsigned int step, const double depth) const;
+    error(const ElasticSystem &system,
+          const unsigned int   step,
+          const double         force,
+          const double         depth) override;
 
-    /// Why the coarser path stopped (empty if it reached every force).
-    const std::string &
-    failure_reason() const
-    {
-      return failure;
-    }
+    std::string
+    method() const override;
 
-    /// What the estimate is, for summary.json and the plot's legend.
-    static std::string
-    method();
-
-    /// The coarser mesh's DoFs.
     types::global_dof_index
-    n_dofs();
+    n_dofs() override;
 
     /// The convergence order p the estimate assumes (see the class).
     static constexpr double assumed_order = 1.5;
@@ -78,7 +71,8 @@ namespace ssc
   private:
     CompanionModel      coarser;
     std::vector<double> depths;
-    std::string         failure;
+    /// Why the coarser path stopped (empty if it reached every force).
+    std::string path_failure;
   };
 } // namespace ssc
 

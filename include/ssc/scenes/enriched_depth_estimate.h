@@ -7,6 +7,7 @@
 
 #include <ssc/mechanics/elastic_system.h>
 #include <ssc/scenes/companion_model.h>
+#include <ssc/scenes/depth_error_estimator.h>
 #include <ssc/scenes/parameters.h>
 
 namespace ssc
@@ -39,7 +40,7 @@ namespace ssc
    * Q1 states (modes that Q1 cannot represent), so its error needs a
    * converged richer solve instead.
    */
-  class EnrichedDepthEstimate
+  class EnrichedDepthEstimate : public DepthErrorEstimator
   {
   public:
     /// The richer model of the scene of @p parameters (Elasticity/Degree
@@ -50,24 +51,18 @@ namespace ssc
     /// The depth (mm) of the richer discretisation minus that of @p system
     /// at the force @p force (N) that @p system's converged state carries,
     /// to first order; NaN where the richer tangent is indefinite or its
-    /// solve fails (why: failure_reason()) (collective).
+    /// solve fails (collective).
     double
-    depth_change(const ElasticSystem &system, const double force);
+    error(const ElasticSystem &system,
+          const unsigned int   step,
+          const double         force,
+          const double         depth) override;
 
-    /// Why the last depth_change() gave no estimate (empty if it did).
-    const std::string &
-    failure_reason() const
-    {
-      return failure;
-    }
+    std::string
+    method() const override;
 
-    /// What the estimate is, for summary.json and the plot's legend.
-    static std::string
-    method();
-
-    /// The richer discretisation's DoFs.
     types::global_dof_index
-    n_dofs();
+    n_dofs() override;
 
   private:
     /// Sets the richer field to @p system's displacement, interpolated
@@ -79,7 +74,6 @@ namespace ssc
     CompanionModel enriched;
     /// Q1 cell values to Q2 cell values (vector-valued elements).
     FullMatrix<double> interpolation;
-    std::string        failure;
   };
 } // namespace ssc
 
