@@ -36,6 +36,8 @@ import csv, math, os, sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import ssc_runner  # noqa: E402
+# a run stopped short: what its progress lines (log.txt) say it reached
+from forearm_finite_strain import stopped_run  # noqa: E402
 
 ROOT = ssc_runner.ROOT
 SCENE = os.path.join(ROOT, "prm", "forearm_indentation.prm")
@@ -57,19 +59,27 @@ ASSUMED_ORDER = 1.5  # CoarserMeshDepthEstimate::assumed_order
 
 
 def run(case, prm, overrides):
-    """The case's summary, run on 2 ranks unless kept (None if it
-    failed)."""
+    """The case's summary, run on 2 ranks unless kept; a run that failed
+    or was stopped by hand (its output kept as log.txt in its folder) gives
+    the forces it reached (None if none)."""
     folder = os.path.join(RUNS, case.split()[0])
-    if not os.path.exists(os.path.join(folder, "summary.json")):
+    summary = os.path.join(folder, "summary.json")
+    if not os.path.exists(summary) and \
+            not os.path.exists(os.path.join(folder, "log.txt")):
         with ssc_runner.scratch() as tmp:
             print("running", case, flush=True)
             result = ssc_runner.run(prm, QUIET + overrides, tmp, "run",
                                     ranks=2, timeout=4 * 3600)
-            if not result.ok:
+            os.makedirs(folder, exist_ok=True)
+            if result.ok:
+                ssc_runner.keep(result.folder, folder)
+            else:
                 print(f"{case}: failed: {result.stderr[-300:]}")
-                return None
-            ssc_runner.keep(result.folder, folder)
-    return ssc_runner.read_summary(folder)
+                with open(os.path.join(folder, "log.txt"), "w") as f:
+                    f.write(result.stdout + result.stderr)
+    if os.path.exists(summary):
+        return ssc_runner.read_summary(folder)
+    return stopped_run(folder)
 
 
 def q2p1_depths():
@@ -99,8 +109,12 @@ def measure():
         row = dict(force_N=force, depth_2h_mm=d_h - estimate * factor,
                    depth_h_mm=d_h, estimate_mm=estimate,
                    estimate_pct=100 * estimate / d_h)
-        d_half = reference["depth_mm"][k] if reference else None
-        row["depth_h/2_mm"] = d_half
+        d_half = reference["depth_mm"][k] if reference and \
+            k < len(reference["depth_mm"]) else None
+        row["depth_h/2_mm"] = "" if d_half is None else d_half
+        row.update({key: "" for key in
+                    ["observed_order", "limit_mm", "error_mm", "error_pct",
+                     "effectivity", "estimate_of_h/2_pct"]})
         if d_half is not None:
             ratio = (d_h - row["depth_2h_mm"]) / (d_half - d_h)
             order = math.log2(ratio) if ratio > 1 else float("nan")
@@ -123,7 +137,11 @@ def measure():
         print({key: round(v, 4) if isinstance(v, float) else v
                for key, v in row.items()}, flush=True)
     for case, s in summaries.items():
-        if s:
+        if s and s.get("stopped_short"):
+            print(f"{case}: {s['dofs']} DoFs, stopped short at "
+                  f"{s['force_N'][-1]} N after "
+                  f"{s['solver']['newton_iterations']} Newton iterations")
+        elif s:
             print(f"{case}: {s['dofs']} DoFs, wall {s['timings']['total']:.1f}"
                   f" s (error estimate "
                   f"{s['timings'].get('error estimate', 0):.1f} s), "
@@ -136,7 +154,8 @@ def plot():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     with open(CSV) as f:
-        rows = [{k: float(v) if v not in ("", None) else None
+        # empty cells (no reference at that force) as NaN: not drawn
+        rows = [{k: float(v) if v not in ("", None) else math.nan
                  for k, v in r.items()} for r in csv.DictReader(f)]
     force = [r["force_N"] for r in rows]
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.5))
@@ -151,7 +170,7 @@ def plot():
     ax.plot([r["limit_mm"] for r in rows], force, "k--",
             label="Richardson limit (observed order)")
     q2 = [(r["q2p1_8_around_mm"], r["force_N"]) for r in rows
-          if r["q2p1_8_around_mm"] is not None]
+          if not math.isnan(r["q2p1_8_around_mm"])]
     ax.plot(*zip(*q2), "D", mfc="none", color="tab:red",
             label="Q2-P1, 8 around (33,075 DoFs)")
     ax.set_xlabel("depth [mm]")
@@ -162,7 +181,7 @@ def plot():
     bx.plot(force, [r["effectivity"] for r in rows], "o-",
             label="against the Richardson limit")
     bx.plot(*zip(*[(r["force_N"], r["effectivity_vs_q2p1"]) for r in rows
-                   if r["effectivity_vs_q2p1"] is not None]), "D:",
+                   if not math.isnan(r["effectivity_vs_q2p1"])]), "D:",
             mfc="none", color="tab:red", label="against Q2-P1, 8 around")
     bx.axhspan(0.5, 2, color="tab:green", alpha=0.15,
                label="0.5-2 (the issue's range)")
