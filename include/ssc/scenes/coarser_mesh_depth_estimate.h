@@ -30,10 +30,12 @@ namespace ssc
    * cells) and needs nothing the scene does not have. Why p = 1.5 and not
    * the observed order: a depth at the singular line where the punch's
    * tie ends converges with an order between 1 (the singularity) and 2
-   * (the energy's rate for smooth problems); the forearm's convergence
-   * study observed 1.3-1.6. With p = 1.5 the estimate is within a factor
+   * (the energy's rate for smooth problems); on three nested meshes the
+   * forearm scene shows 1.0-1.44 at 0.35-1.5 N (and 0.43 at 1.8 N, not
+   * yet asymptotic). With p = 1.5 the estimate is within a factor
    * 0.55-1.64 of the true error for any order between 1 and 2; the
-   * observed order needs a third mesh (benchmarks/forearm/).
+   * observed order needs a third mesh, which costs 8 times the scene
+   * (benchmarks/forearm/depth_error_effectivity.py).
    */
   class CoarserMeshDepthEstimate : public DepthErrorEstimator
   {
