@@ -52,12 +52,8 @@ namespace ssc
     path_failure.clear();
     try
       {
-        driver.run(
-          loads,
-          [&loading](const double load) { loading.apply(load); },
-          loads.front() / parameters.newton.initial_steps,
-          LoadDependence::right_hand_side,
-          [&](const unsigned int step) {
+        follow_punch_path(
+          driver, loading, parameters, [&](const unsigned int step) {
             depths.push_back(loading.depth(loads[step]));
             pcout << "  coarser mesh: force " << std::setprecision(6)
                   << loads[step] << " N, depth " << depths.back() << " mm";

@@ -84,12 +84,7 @@ namespace ssc
         }
       record.print_step(step, loads.size());
     };
-    driver.run(
-      loads,
-      [&loading](const double load) { loading.apply(load); },
-      loads.front() / parameters.newton.initial_steps,
-      LoadDependence::right_hand_side,
-      on_step);
+    follow_punch_path(driver, loading, parameters, on_step);
     {
       TimerOutput::Scope t(scene.timer(), "output");
       record.write_tables(loads, scene.output());

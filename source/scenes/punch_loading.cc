@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <ssc/scenes/punch_loading.h>
+#include <ssc/scenes/quasi_static_driver.h>
 #include <ssc/scenes/support_conditions.h>
 
 namespace ssc
@@ -219,5 +220,21 @@ namespace ssc
       return load;
     const types::global_dof_index master = system.constraints().master_dof(0);
     return -system.field().solution()[master];
+  }
+
+
+  void
+  follow_punch_path(QuasiStaticDriver                       &driver,
+                    PunchLoading                            &loading,
+                    const Parameters                        &parameters,
+                    const std::function<void(unsigned int)> &on_step)
+  {
+    const std::vector<double> loads = parameters.punch.loads();
+    driver.run(
+      loads,
+      [&loading](const double load) { loading.apply(load); },
+      loads.front() / parameters.newton.initial_steps,
+      LoadDependence::right_hand_side,
+      on_step);
   }
 } // namespace ssc

@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <functional>
 #include <memory>
 
 #include <ssc/contact/punch_friction.h>
@@ -13,6 +14,8 @@
 
 namespace ssc
 {
+  class QuasiStaticDriver;
+
   /**
    * The rigid flat cylindrical punch of the indentation scene as boundary
    * conditions of the elastic system: the patch's supports, u_x = u_y = 0
@@ -78,6 +81,21 @@ namespace ssc
     std::unique_ptr<RigidPunchContact> contact;
     std::unique_ptr<PunchFriction>     face_friction;
   };
+
+
+  /**
+   * Brings @p driver through the punch's loads of @p parameters (the Forces,
+   * or the equal depth steps) applied by @p loading, Newton's first
+   * increment the first load over Nonlinear solver/Initial steps, calling
+   * @p on_step(k) after load k: the path of an indentation run, in one
+   * place so that the scene and its error estimate's second discretisation
+   * take the same one.
+   */
+  void
+  follow_punch_path(QuasiStaticDriver                       &driver,
+                    PunchLoading                            &loading,
+                    const Parameters                        &parameters,
+                    const std::function<void(unsigned int)> &on_step);
 } // namespace ssc
 
 #endif
