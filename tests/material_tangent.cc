@@ -3,7 +3,8 @@
 // finite differences of itself, at a random deformation gradient: the first
 // Piola stress of the isochoric part (tau_iso F^{-T}) plus U'(J) J F^{-T} is
 // the derivative of the energy, the spatial tangent pulled back is the
-// derivative of that stress, the law is objective (tau(QF) = Q tau Q^T), and
+// derivative of that stress, the law is objective (tau(QF) = Q tau Q^T), its
+// stress alone (what a residual asks for) is the stress of its response, and
 // its small-strain tangent is the isotropic 2 mu (I^s - 1/3 1 (x) 1). The
 // linear law: its Cauchy stress is the derivative of its energy. A new law
 // is checked here as soon as it registers itself.
@@ -143,6 +144,15 @@ main(int argc, char **argv)
                 << (largest(Tensor<2, 3>(tau_rotated) -
                             Q * Tensor<2, 3>(tau) * transpose(Q)) <
                         1e-12 * largest(Tensor<2, 3>(tau)) ?
+                      "yes" :
+                      "no")
+                << std::endl;
+
+      // the residual's stress-only path (Material::isochoric_stress())
+      if (law->kinematics() == ssc::Kinematics::finite_strain)
+        deallog << name << ": the stress alone is the response's stress: "
+                << (largest(Tensor<2, 3>(law->isochoric_stress(F) - tau)) <=
+                        1e-14 * largest(Tensor<2, 3>(tau)) ?
                       "yes" :
                       "no")
                 << std::endl;

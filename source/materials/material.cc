@@ -12,15 +12,23 @@ namespace ssc
 
 
   SymmetricTensor<2, 3>
+  Material::isochoric_stress(const Tensor<2, 3> &F) const
+  {
+    SymmetricTensor<2, 3> tau;
+    Tensor<4, 3>          tangent;
+    isochoric_response(F, tau, tangent);
+    return tau;
+  }
+
+
+  SymmetricTensor<2, 3>
   Material::cauchy_stress(const Tensor<2, 3> &F, const double gamma) const
   {
     // the energy gamma (W_iso(F) + U(J / gamma)) of growth F_g = gamma^{1/3}
     // I: tau = gamma tau_iso + J U'(J / gamma) I
     const double J = determinant(F);
     Assert(J > 0, ExcMessage("Cauchy stress of an inverted state."));
-    SymmetricTensor<2, 3> tau;
-    Tensor<4, 3>          tangent;
-    isochoric_response(F, tau, tangent);
+    const SymmetricTensor<2, 3> tau = isochoric_stress(F);
     return (gamma * tau + J * volumetric_energy.pressure(J / gamma) *
                             unit_symmetric_tensor<3>()) /
            J;

@@ -4,18 +4,35 @@
 
 namespace ssc
 {
+  namespace
+  {
+    /// b_bar = J^{-2/3} F F^T
+    SymmetricTensor<2, 3>
+    isochoric_left_stretch(const Tensor<2, 3> &F)
+    {
+      return std::pow(determinant(F), -2. / 3.) * symmetrize(F * transpose(F));
+    }
+  } // namespace
+
+
+  SymmetricTensor<2, 3>
+  NeoHookeanMaterial::isochoric_stress(const Tensor<2, 3> &F) const
+  {
+    Assert(determinant(F) > 0, ExcMessage("det F <= 0"));
+    return reference_moduli.shear_modulus * deviator(isochoric_left_stretch(F));
+  }
+
+
   void
   NeoHookeanMaterial::isochoric_response(const Tensor<2, 3>    &F,
                                          SymmetricTensor<2, 3> &tau,
                                          Tensor<4, 3>          &tangent) const
   {
     Assert(determinant(F) > 0, ExcMessage("det F <= 0"));
-    const double                mu = reference_moduli.shear_modulus;
-    const double                J  = determinant(F);
-    const SymmetricTensor<2, 3> b_bar =
-      std::pow(J, -2. / 3.) * symmetrize(F * transpose(F));
-    const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
-    tau                           = mu * deviator(b_bar);
+    const double                mu    = reference_moduli.shear_modulus;
+    const SymmetricTensor<2, 3> b_bar = isochoric_left_stretch(F);
+    const SymmetricTensor<2, 3> I     = unit_symmetric_tensor<3>();
+    tau                               = mu * deviator(b_bar);
     const SymmetricTensor<4, 3> c =
       2. / 3. * mu * trace(b_bar) *
         (identity_tensor<3>() - 1. / 3. * outer_product(I, I)) -

@@ -182,9 +182,14 @@ namespace ssc
         // Growth F_g = gamma^{1/3} I with the energy gamma W(F F_g^{-1}):
         // the isochoric part depends on J^{-1/3} F only, so it is scaled by
         // gamma; the volumetric part sees J_e = J / gamma.
-        material.isochoric_response(F[q], tau, T);
+        if (with_matrix)
+          {
+            material.isochoric_response(F[q], tau, T);
+            T *= gamma[q];
+          }
+        else
+          tau = material.isochoric_stress(F[q]);
         tau *= gamma[q];
-        T *= gamma[q];
         const double J_e = J / gamma[q];
         double       p   = beta * volumetric.pressure(J_e);
         if (projected)
@@ -198,8 +203,9 @@ namespace ssc
             const unsigned int ci  = component[i];
             const double       div = g[base[i]][ci];
             cell_residual(i) += ((tau * g[base[i]])[ci] + p * J * div) * JxW;
-            for (unsigned int a = 0; a < n_p; ++a)
-              B(a, i) += projection.basis[q][a] * J * div * JxW;
+            if (with_matrix)
+              for (unsigned int a = 0; a < n_p; ++a)
+                B(a, i) += projection.basis[q][a] * J * div * JxW;
           }
         if (body_force != nullptr)
           {

@@ -72,6 +72,13 @@ namespace ssc
                        SymmetricTensor<2, 3> &tau,
                        Tensor<4, 3>          &tangent) const = 0;
 
+    /// The isochoric Kirchhoff stress alone, what a residual needs. By
+    /// default taken from isochoric_response(); a law overrides it where
+    /// the tangent costs more than the stress (a residual assembly is half
+    /// of a Newton iteration's assemblies).
+    virtual SymmetricTensor<2, 3>
+    isochoric_stress(const Tensor<2, 3> &F) const;
+
     /// Strain energy per unit reference volume at @p F: the isochoric part
     /// plus U(J).
     virtual double

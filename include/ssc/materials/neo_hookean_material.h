@@ -40,6 +40,9 @@ namespace ssc
                        SymmetricTensor<2, 3> &tau,
                        Tensor<4, 3>          &tangent) const override;
 
+    SymmetricTensor<2, 3>
+    isochoric_stress(const Tensor<2, 3> &F) const override;
+
     double
     energy(const Tensor<2, 3> &F) const override;
   };

@@ -77,7 +77,8 @@ namespace ssc
                        ProjectedDilatation &projection) const;
 
     /// The quadrature loop: residual and tangent (isochoric, geometric and
-    /// the volumetric share at the points) and B = int q_a J div(phi_i).
+    /// the volumetric share at the points) and, with the tangent, B = int
+    /// q_a J div(phi_i).
     void
     integrate(const DoFHandler<3>::active_cell_iterator &cell,
               const CellScratch                         &scratch,
