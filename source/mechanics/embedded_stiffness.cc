@@ -18,9 +18,8 @@ namespace ssc
     const MPI_Comm                     communicator)
     : membrane(law)
     , fe(fe)
-    , mapping(mapping)
   {
-    setup_points(quadrature, communicator);
+    setup_points(quadrature, mapping, communicator);
   }
 
 
@@ -32,18 +31,28 @@ namespace ssc
     const MPI_Comm                     communicator)
     : cable(law)
     , fe(fe)
-    , mapping(mapping)
   {
-    setup_points(quadrature, communicator);
+    setup_points(quadrature, mapping, communicator);
   }
 
 
   void
   EmbeddedStiffness::setup_points(const std::vector<CellQuadrature> &quadrature,
+                                  const Mapping<3>                  &mapping,
                                   const MPI_Comm communicator)
   {
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      component.push_back(fe.system_to_component_index(i).first);
+      {
+        const auto [c, alpha] = fe.system_to_component_index(i);
+        component.push_back(c);
+        base.push_back(alpha);
+      }
+    const unsigned int n_base = fe.base_element(0).n_dofs_per_cell();
+    // a dof of component 0 for each base function
+    std::vector<unsigned int> first_dof(n_base);
+    for (unsigned int i = fe.n_dofs_per_cell(); i-- > 0;)
+      if (component[i] == 0)
+        first_dof[base[i]] = i;
     unsigned int n_local = 0;
     for (const CellQuadrature &cell_quadrature : quadrature)
       {
@@ -51,12 +60,23 @@ namespace ssc
         if (points_per_cell.size() <= index)
           points_per_cell.resize(
             cell_quadrature.cell->get_triangulation().n_active_cells());
+        FEValues<3> fe_values(mapping,
+                              fe,
+                              Quadrature<3>(cell_quadrature.unit_points),
+                              update_gradients);
+        fe_values.reinit(cell_quadrature.cell);
         for (unsigned int q = 0; q < cell_quadrature.JxW.size(); ++q)
           {
-            points_per_cell[index].push_back({cell_quadrature.unit_points[q],
-                                              cell_quadrature.directions[q],
-                                              cell_quadrature.JxW[q],
-                                              cell_quadrature.materials[q]});
+            std::vector<Tensor<1, 3>> gradients(n_base);
+            for (unsigned int alpha = 0; alpha < n_base; ++alpha)
+              gradients[alpha] =
+                fe_values.shape_grad_component(first_dof[alpha], q, 0);
+            LocalPoint point{cell_quadrature.directions[q],
+                             cell_quadrature.JxW[q],
+                             cell_quadrature.materials[q],
+                             0.,
+                             std::move(gradients)};
+            points_per_cell[index].push_back(std::move(point));
             ++n_local;
           }
       }
@@ -97,23 +117,6 @@ namespace ssc
   }
 
 
-  std::unique_ptr<FEValues<3>>
-  EmbeddedStiffness::reinit_points(
-    const DoFHandler<3>::active_cell_iterator &cell,
-    const std::vector<LocalPoint>             &local) const
-  {
-    std::vector<Point<3>> units(local.size());
-    for (unsigned int q = 0; q < local.size(); ++q)
-      units[q] = local[q].unit_point;
-    auto fe_values = std::make_unique<FEValues<3>>(mapping,
-                                                   fe,
-                                                   Quadrature<3>(units),
-                                                   update_gradients);
-    fe_values->reinit(cell);
-    return fe_values;
-  }
-
-
   void
   EmbeddedStiffness::add_to_cell(
     const DoFHandler<3>::active_cell_iterator &cell,
@@ -127,22 +130,19 @@ namespace ssc
     const unsigned int    index         = cell->active_cell_index();
     if (index >= points_per_cell.size() || points_per_cell[index].empty())
       return;
-    const std::vector<LocalPoint> &local     = points_per_cell[index];
-    const auto                     fe_values = reinit_points(cell, local);
+    const std::vector<LocalPoint> &local = points_per_cell[index];
     AssertDimension(u.size(), fe.n_dofs_per_cell());
     if (scratch.kinematics == Kinematics::small_strain)
-      add_linear(local, *fe_values, u, cell_matrix, cell_residual);
+      add_linear(local, u, cell_matrix, cell_residual);
     else if (cable)
-      add_cable(local, *fe_values, u, with_matrix, cell_matrix, cell_residual);
+      add_cable(local, u, with_matrix, cell_matrix, cell_residual);
     else
-      add_membrane(
-        local, *fe_values, u, with_matrix, cell_matrix, cell_residual);
+      add_membrane(local, u, with_matrix, cell_matrix, cell_residual);
   }
 
 
   void
   EmbeddedStiffness::add_linear(const std::vector<LocalPoint> &local,
-                                const FEValues<3>             &fe_values,
                                 const Vector<double>          &u,
                                 FullMatrix<double>            &cell_matrix,
                                 Vector<double> &cell_residual) const
@@ -161,8 +161,8 @@ namespace ssc
         const Tensor<1, 3> &d = local[q].direction;
         for (unsigned int i = 0; i < n; ++i)
           {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            const Tensor<1, 3> g = fe_values.shape_grad_component(i, q, c);
+            const unsigned int  c = component[i];
+            const Tensor<1, 3> &g = local[q].base_gradients[base[i]];
             if (cable)
               // tau . eps tau with eps = sym(e_c (x) g)
               trace[i] = d[c] * (d * g);
@@ -204,15 +204,14 @@ namespace ssc
 
   Tensor<2, 3>
   EmbeddedStiffness::deformation_gradient(
-    const FEValues<3>         &fe_values,
-    const unsigned int         q,
+    const LocalPoint          &point,
     const Vector<double>      &u,
     std::vector<Tensor<1, 3>> &gradients) const
   {
     Tensor<2, 3> F = unit_symmetric_tensor<3>();
     for (unsigned int i = 0; i < component.size(); ++i)
       {
-        gradients[i] = fe_values.shape_grad_component(i, q, component[i]);
+        gradients[i] = point.base_gradients[base[i]];
         F[component[i]] += u(i) * gradients[i];
       }
     return F;
@@ -221,7 +220,6 @@ namespace ssc
 
   void
   EmbeddedStiffness::add_cable(const std::vector<LocalPoint> &local,
-                               const FEValues<3>             &fe_values,
                                const Vector<double>          &u,
                                const bool                     with_matrix,
                                FullMatrix<double>            &cell_matrix,
@@ -232,7 +230,7 @@ namespace ssc
     std::vector<double>       de(n), gd(n);
     for (unsigned int q = 0; q < local.size(); ++q)
       {
-        const Tensor<2, 3> F = deformation_gradient(fe_values, q, u, g);
+        const Tensor<2, 3> F = deformation_gradient(local[q], u, g);
         // e = (|F tau|^2 / lambda_0^2 - 1) / 2, S = E A e;
         // de/du_i = a_ci (g_i . tau) / lambda_0^2 =: s a_ci (g_i . tau)
         const Tensor<1, 3> &d = local[q].direction;
@@ -260,7 +258,6 @@ namespace ssc
 
   void
   EmbeddedStiffness::add_membrane(const std::vector<LocalPoint> &local,
-                                  const FEValues<3>             &fe_values,
                                   const Vector<double>          &u,
                                   const bool                     with_matrix,
                                   FullMatrix<double>            &cell_matrix,
@@ -271,7 +268,7 @@ namespace ssc
     std::vector<Tensor<1, 3>> v(n), Dv(n), b(n), Sb(n);
     for (unsigned int q = 0; q < local.size(); ++q)
       {
-        const Tensor<2, 3> F = deformation_gradient(fe_values, q, u, g);
+        const Tensor<2, 3> F = deformation_gradient(local[q], u, g);
         // E = (P F^T F P - P)/2, S = dW/dE (MembraneLaw::state());
         // dE_i = sym(a_i (x) b_i), a_i = P F^T e_ci, b_i = P g_i.
         // Strain variations lie in the tangent plane, whose symmetric
@@ -302,8 +299,10 @@ namespace ssc
         for (unsigned int k = 0; k < 3; ++k)
           {
             s[k] = scalar_product(state.stress, basis[k]);
-            for (unsigned int l = 0; l < 3; ++l)
-              D[k][l] = state.second_derivative(basis[k], basis[l]) / stretch2;
+            if (with_matrix)
+              for (unsigned int l = 0; l < 3; ++l)
+                D[k][l] =
+                  state.second_derivative(basis[k], basis[l]) / stretch2;
           }
         for (unsigned int i = 0; i < n; ++i)
           {
@@ -311,21 +310,24 @@ namespace ssc
             for (unsigned int k = 0; k < 3; ++k)
               a[k] = PFt[k][component[i]];
             b[i]            = P * g[i];
-            Sb[i]           = state.stress * b[i];
             const double a1 = a * t1, a2 = a * t2;
             const double b1 = b[i] * t1, b2 = b[i] * t2;
             v[i][0] = a1 * b1;
             v[i][1] = a2 * b2;
             v[i][2] = 0.5 * (a1 * b2 + a2 * b1);
-            Dv[i]   = D * v[i];
             cell_residual(i) += s * v[i];
           }
-        if (with_matrix)
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              cell_matrix(i, j) +=
-                Dv[i] * v[j] +
-                (component[i] == component[j] ? b[j] * Sb[i] : 0.);
+        if (!with_matrix)
+          continue;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            Dv[i] = D * v[i];
+            Sb[i] = state.stress * b[i];
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            cell_matrix(i, j) +=
+              Dv[i] * v[j] + (component[i] == component[j] ? b[j] * Sb[i] : 0.);
       }
   }
 } // namespace ssc

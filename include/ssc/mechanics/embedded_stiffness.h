@@ -1,15 +1,12 @@
 #ifndef ssc_mechanics_embedded_stiffness_h
 #define ssc_mechanics_embedded_stiffness_h
 
-#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
 #include <deal.II/fe/fe.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 
 #include <functional>
-#include <memory>
 #include <optional>
 #include <vector>
 
@@ -91,24 +88,30 @@ namespace ssc
     double
     growth_ratio(const double weight) const;
 
-    /// What one located quadrature point needs for the assembly.
+    /// What one located quadrature point needs for the assembly. The
+    /// reference gradients of the cell's shape functions at the point are
+    /// kept: the background mesh does not move (total Lagrangian), so they
+    /// need not be evaluated again at every assembly (an FEValues built per
+    /// cell, as until 2026-12-07).
     struct LocalPoint
     {
-      Point<3>           unit_point;
       Tensor<1, 3>       direction;
       double             JxW;
       types::material_id material;          ///< of the embedded cell
       double             growth_weight = 0; ///< w of grow_with()
+      /// grad N_alpha of each scalar base function alpha (the dofs of all
+      /// three components share them)
+      std::vector<Tensor<1, 3>> base_gradients;
     };
 
     void
     setup_points(const std::vector<CellQuadrature> &quadrature,
+                 const Mapping<3>                  &mapping,
                  const MPI_Comm                     communicator);
 
     /// Small strain: K u - f with the linear law.
     void
     add_linear(const std::vector<LocalPoint> &local,
-               const FEValues<3>             &fe_values,
                const Vector<double>          &u,
                FullMatrix<double>            &cell_matrix,
                Vector<double>                &cell_residual) const;
@@ -116,7 +119,6 @@ namespace ssc
     /// Finite strain: the cable's Green strain.
     void
     add_cable(const std::vector<LocalPoint> &local,
-              const FEValues<3>             &fe_values,
               const Vector<double>          &u,
               const bool                     with_matrix,
               FullMatrix<double>            &cell_matrix,
@@ -125,31 +127,24 @@ namespace ssc
     /// Finite strain: the membrane's Green strain.
     void
     add_membrane(const std::vector<LocalPoint> &local,
-                 const FEValues<3>             &fe_values,
                  const Vector<double>          &u,
                  const bool                     with_matrix,
                  FullMatrix<double>            &cell_matrix,
                  Vector<double>                &cell_residual) const;
 
-    /// F = I + grad u at embedded point @p q, with the reference gradients
-    /// of the shape functions (of their own component) into @p gradients.
+    /// F = I + grad u at @p point, with the reference gradients of the
+    /// shape functions (of their own component) into @p gradients.
     Tensor<2, 3>
-    deformation_gradient(const FEValues<3>         &fe_values,
-                         const unsigned int         q,
+    deformation_gradient(const LocalPoint          &point,
                          const Vector<double>      &u,
                          std::vector<Tensor<1, 3>> &gradients) const;
-
-    /// FEValues with the cell's embedded points (reference gradients).
-    std::unique_ptr<FEValues<3>>
-    reinit_points(const DoFHandler<3>::active_cell_iterator &cell,
-                  const std::vector<LocalPoint>             &local) const;
 
     std::optional<MembraneLaw> membrane;
     std::optional<CableLaw>    cable;
     const FiniteElement<3>    &fe;
-    const Mapping<3>          &mapping;
-    /// The displacement component of each of a cell's dofs.
-    std::vector<unsigned int>            component;
+    /// The displacement component and the scalar base function of each of
+    /// a cell's dofs.
+    std::vector<unsigned int>            component, base;
     std::vector<std::vector<LocalPoint>> points_per_cell;
     /// The growth the membranes follow (null: they do not grow).
     const GrowthField *growth          = nullptr;
