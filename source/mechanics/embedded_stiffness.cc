@@ -47,13 +47,8 @@ namespace ssc
         component.push_back(c);
         base.push_back(alpha);
       }
-    const unsigned int n_base = fe.base_element(0).n_dofs_per_cell();
-    // a dof of component 0 for each base function
-    std::vector<unsigned int> first_dof(n_base);
-    for (unsigned int i = fe.n_dofs_per_cell(); i-- > 0;)
-      if (component[i] == 0)
-        first_dof[base[i]] = i;
-    unsigned int n_local = 0;
+    const unsigned int n_base  = fe.base_element(0).n_dofs_per_cell();
+    unsigned int       n_local = 0;
     for (const CellQuadrature &cell_quadrature : quadrature)
       {
         const unsigned int index = cell_quadrature.cell->active_cell_index();
@@ -69,8 +64,8 @@ namespace ssc
           {
             std::vector<Tensor<1, 3>> gradients(n_base);
             for (unsigned int alpha = 0; alpha < n_base; ++alpha)
-              gradients[alpha] =
-                fe_values.shape_grad_component(first_dof[alpha], q, 0);
+              gradients[alpha] = fe_values.shape_grad_component(
+                fe.component_to_system_index(0, alpha), q, 0);
             LocalPoint point{cell_quadrature.directions[q],
                              cell_quadrature.JxW[q],
                              cell_quadrature.materials[q],
