@@ -1,6 +1,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 #include <ssc/base/user_message.h>
 #include <ssc/scenes/coarser_mesh_depth_estimate.h>
@@ -92,8 +93,11 @@ namespace ssc
   std::string
   CoarserMeshDepthEstimate::method() const
   {
-    return "Richardson from this mesh and the mesh with one refinement "
-           "fewer, assumed order 1.5";
+    std::ostringstream text;
+    text << "Richardson from this mesh and the mesh with one refinement "
+            "fewer, assumed order "
+         << assumed_order;
+    return text.str();
   }
 
 
