@@ -213,6 +213,13 @@ namespace ssc
   }
 
 
+  void
+  LinearSolver::matrix_reinitialized()
+  {
+    gmg.clear();
+  }
+
+
   std::string
   LinearSolver::preconditioner_name() const
   {
@@ -314,11 +321,13 @@ namespace ssc
         solution_constraints.distribute(x);
         return LinearSolveReport();
       }
-    // A factor of an earlier matrix is used for a limited number of
-    // iterations; then the current matrix is factorised and the solve
-    // continues from where it stopped.
+    // A factor (or, if asked for, the V-cycle) of an earlier matrix is
+    // used for a limited number of iterations; then the current matrix is
+    // factorised (its V-cycle built) and the solve continues from where it
+    // stopped.
     const bool reuse =
-      (cholesky.factorized() || ldlt.factorized()) &&
+      (cholesky.factorized() || ldlt.factorized() ||
+       (parameters.keep_vcycle && gmg.initialized())) &&
       active_preconditioner().trilinos_operator().OperatorDomainMap().SameAs(
         matrix.trilinos_matrix().DomainMap());
     if (!reuse)

@@ -63,11 +63,26 @@ namespace ssc
     prm.add_parameter(
       "Refactorization iterations",
       refactorization_iterations,
-      "With Preconditioner = cholesky or ldlt: a solve preconditioned by "
-      "the factor of an earlier matrix stops after this many iterations, "
-      "the current matrix is factorised and the solve continues with the "
-      "new factor.",
+      "With Preconditioner = cholesky or ldlt (or gmg with Keep V-cycle): "
+      "a solve preconditioned by the factor (V-cycle) of an earlier matrix "
+      "stops after this many iterations, the current matrix is factorised "
+      "(its V-cycle built) and the solve continues with the new one.",
       Patterns::Integer(1, 10000));
+    prm.add_parameter(
+      "Keep V-cycle",
+      keep_vcycle,
+      "With Preconditioner = gmg: keep the V-cycle of an earlier tangent "
+      "(its Galerkin levels, line blocks, Chebyshev bounds and coarse "
+      "factor; the finest level's product is always the current "
+      "tangent's) across Newton iterations and load steps, as the factors "
+      "are kept: a solve that needs more than Refactorization iterations "
+      "with it rebuilds the V-cycle for the current tangent and goes on. "
+      "Saves the V-cycle's setup (about a third of the solve time on the "
+      "forearm scene) at the cost of more CG iterations. Off by default: "
+      "on the forearm scene on 2 ranks it took another path in each "
+      "repetition, for a reason not yet found, and saved 0-15 % "
+      "(benchmarks/forearm/README.md, \"Keeping the V-cycle\"). "
+      "Trust-region steps rebuild it for every new tangent.");
     prm.add_parameter("Tolerance",
                       tolerance,
                       "CG stops when the residual has dropped by this factor "

@@ -22,6 +22,7 @@ namespace ssc
     const MPI_Comm  communicator =
       field.dof_handler().get_triangulation().get_communicator();
     linearisation.tangent.reinit(sparsity);
+    linear_solver.matrix_reinitialized();
     if (parameters.linear_solver.method == LinearSolverMethod::block)
       {
         pressure =

@@ -142,6 +142,11 @@ namespace ssc
                  const SolveTarget                    &target,
                  const bool                            new_preconditioner);
 
+    /// The matrix was set up anew (a new sparsity): drops the V-cycle,
+    /// whose finest level refers to the matrix it was built for.
+    void
+    matrix_reinitialized();
+
   private:
     /// The AMG hierarchy for @p matrix.
     void

@@ -55,6 +55,7 @@ namespace ssc
     DisplacementPreconditioner preconditioner = DisplacementPreconditioner::amg;
     unsigned int               refactorization_iterations = 20;
     bool                       factor_indefinite          = true;
+    bool                       keep_vcycle                = false;
     double                     tolerance                  = 1e-8;
     unsigned int               max_iterations             = 1000;
     bool                       rigid_body_modes           = true;
