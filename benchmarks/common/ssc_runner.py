@@ -29,6 +29,7 @@ import os
 import shutil
 import signal
 import subprocess
+import sys
 import tempfile
 import threading
 import time
@@ -165,6 +166,17 @@ def _wait(process, timeout):
     if killed and process.returncode == -signal.SIGKILL:
         return None, None
     return status, usage
+
+
+def run_or_exit(label, prm, overrides=(), **options):
+    """Runs ssc once on prm in a scratch folder (options as for run());
+    returns its summary and its standard output, or stops the script
+    naming label if the run failed."""
+    with scratch() as tmp:
+        result = run(prm, overrides, tmp, "run", **options)
+        if not result.ok:
+            sys.exit(f"{label}: failed: {result.stderr[-500:]}")
+        return result.summary(), result.stdout
 
 
 def read_summary(folder):

@@ -27,6 +27,7 @@ import csv, os, sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import ssc_runner  # noqa: E402
+from timing_bars import plot_timings, timing_columns  # noqa: E402
 
 SCENE = os.path.join(ssc_runner.ROOT, "prm", "forearm_indentation.prm")
 CSV = os.path.join(HERE, "results", "assembly_speed.csv")
@@ -37,23 +38,11 @@ RANKS = 2
 
 def run(label, build):
     """One run of the scene with the build in directory build."""
-    env = dict(os.environ, LD_LIBRARY_PATH=build)
-    with ssc_runner.scratch() as tmp:
-        result = ssc_runner.run(SCENE, OVERRIDES, tmp, "run", ranks=RANKS,
-                                ssc=os.path.join(build, "bin", "ssc"),
-                                env=env, timeout=3600)
-        if not result.ok:
-            sys.exit(f"{label}: failed: {result.stderr[-500:]}")
-        s = result.summary()
-    solver, timings = s["solver"], s["timings"]
-    return dict(
-        build=label, dofs=s["dofs"], wall_s=round(timings["total"], 1),
-        assembly_s=round(timings.get("assembly", 0.), 1),
-        solve_s=round(timings.get("solve", 0.), 1),
-        estimate_s=round(timings.get("error estimate", 0.), 1),
-        newton_iterations=solver["newton_iterations"],
-        krylov_iterations=solver["linear_iterations"],
-        depths_mm=" ".join(f"{d:.6f}" for d in s["depth_mm"]))
+    summary, _ = ssc_runner.run_or_exit(
+        label, SCENE, OVERRIDES, ranks=RANKS,
+        ssc=os.path.join(build, "bin", "ssc"),
+        env=dict(os.environ, LD_LIBRARY_PATH=build), timeout=3600)
+    return dict(build=label, **timing_columns(summary))
 
 
 def measure(baseline, repetitions):
@@ -79,36 +68,10 @@ def measure(baseline, repetitions):
 def plot():
     """Per build the median run's assembly, solve and wall times, whiskers
     over all its runs."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     with open(CSV) as f:
-        rows = list(csv.DictReader(f))
-    labels = list(dict.fromkeys(r["build"] for r in rows))
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for k, label in enumerate(labels):
-        runs = sorted((r for r in rows if r["build"] == label),
-                      key=lambda r: float(r["wall_s"]))
-        median = runs[len(runs) // 2]
-        for offset, key, colour in ((-0.25, "wall_s", "0.6"),
-                                    (0., "assembly_s", "tab:blue"),
-                                    (0.25, "solve_s", "tab:orange")):
-            values = [float(r[key]) for r in runs]
-            ax.bar(k + offset, float(median[key]), width=0.25, color=colour,
-                   label=key.split("_")[0] if k == 0 else None)
-            ax.plot([k + offset] * 2, [min(values), max(values)], color="k",
-                    lw=1)
-    ax.set_xticks(range(len(labels)))
-    ax.set_xticklabels(labels)
-    ax.set_ylabel("time (s)")
-    first = rows[0]
-    ax.set_title(f"main scene to 1.8 N on {RANKS} ranks ({first['dofs']} "
-                 f"DoFs, {first['newton_iterations']} Newton iterations)",
-                 fontsize=10)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(CSV.replace(".csv", ".png"), dpi=120)
-    print("wrote", CSV.replace(".csv", ".png"))
+        first = next(csv.DictReader(f))
+    plot_timings(CSV, "build", f"main scene to 1.8 N on {RANKS} ranks "
+                 f"({first['dofs']} DoFs)")
 
 
 if __name__ == "__main__":

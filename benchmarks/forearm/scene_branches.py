@@ -59,20 +59,16 @@ def unstable_directions(log):
 def measure():
     rows = []
     for label, overrides in VARIANTS:
-        with ssc_runner.scratch() as tmp:
-            result = ssc_runner.run(SCENE, COMMON + overrides, tmp, "run",
-                                    ranks=RANKS, timeout=3600)
-            if not result.ok:
-                sys.exit(f"{label}: failed: {result.stderr[-500:]}")
-            s = result.summary()
+        s, log = ssc_runner.run_or_exit(label, SCENE, COMMON + overrides,
+                                        ranks=RANKS, timeout=3600)
         solver = s["solver"]
-        modes = unstable_directions(result.stdout)
+        modes = unstable_directions(log)
         row = dict(
             variant=label, dofs=s["dofs"],
             newton_iterations=solver["newton_iterations"],
             newton_per_force=" ".join(
                 str(n) for n in solver["newton_iterations_per_step"]),
-            trust_region_phases=result.stdout.count("line search failed"),
+            trust_region_phases=log.count("line search failed"),
             unstable_r_mm=" ".join(f"{r:.2f}" for r, _, _ in modes),
             unstable_z_mm=" ".join(f"{z:.2f}" for _, z, _ in modes),
             largest_node_share=" ".join(f"{w:.2f}" for _, _, w in modes),
