@@ -80,7 +80,7 @@ namespace ssc
       "Saves the V-cycle's setup (about a third of the solve time on the "
       "forearm scene) at the cost of more CG iterations. Off by default: "
       "on the forearm scene on 2 ranks it took another path in each "
-      "repetition, for a reason not yet found, and saved 0-15 % "
+      "repetition, for a reason not yet found, and saved 6 % at best "
       "(benchmarks/forearm/README.md, \"Keeping the V-cycle\"). "
       "Trust-region steps rebuild it for every new tangent.");
     prm.add_parameter("Tolerance",
