@@ -28,18 +28,16 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import ssc_runner  # noqa: E402
 from timing_bars import plot_timings, timing_columns  # noqa: E402
+from main_scene import NO_PICTURES, SCENE  # noqa: E402
+from main_scene import SHIPPED_RANKS as RANKS  # noqa: E402
 
-SCENE = os.path.join(ssc_runner.ROOT, "prm", "forearm_indentation.prm")
 CSV = os.path.join(HERE, "results", "assembly_speed.csv")
-OVERRIDES = ["Run/Write fields=false", "Punch/Section=false",
-             "Punch/Profile length=0"]
-RANKS = 2
 
 
 def run(label, build):
     """One run of the scene with the build in directory build."""
     summary, _ = ssc_runner.run_or_exit(
-        label, SCENE, OVERRIDES, ranks=RANKS,
+        label, SCENE, NO_PICTURES, ranks=RANKS,
         ssc=os.path.join(build, "bin", "ssc"),
         env=dict(os.environ, LD_LIBRARY_PATH=build), timeout=3600)
     return dict(build=label, **timing_columns(summary))

@@ -29,7 +29,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import ssc_runner  # noqa: E402
 
-SCENE = os.path.join(ssc_runner.ROOT, "prm", "forearm_indentation.prm")
+from main_scene import NO_PICTURES, SCENE  # noqa: E402,F401
+
 CSV = os.path.join(HERE, "results", "newton_path.csv")
 # the scene's discretisation until 2026-12-06, which these studies (and
 # scalable_path.py's "scene" row, scene_speed.py, error_estimate.py,
@@ -40,8 +41,7 @@ SCENE_UNTIL_2026_12_06 = [
     "Mesh/O-grid/Radial grading=1.4", "Mesh/Global refinements=0",
     "Elasticity/Linear solver/Preconditioner=cholesky",
     "Punch/Depth error estimate=none"]
-COMMON = ["Run/Write fields=false", "Punch/Section=false",
-          "Punch/Profile length=0"] + SCENE_UNTIL_2026_12_06
+COMMON = NO_PICTURES + SCENE_UNTIL_2026_12_06
 DEPTH_CONTROL = ["Punch/Control=displacement", "Punch/Depth=11.05",
                  "Punch/Load steps=7"]
 VARIANTS = [

@@ -32,12 +32,11 @@ import csv, os, re, sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import ssc_runner  # noqa: E402
+from main_scene import NO_PICTURES, SCENE  # noqa: E402
+from main_scene import SHIPPED_RANKS as RANKS  # noqa: E402
 
-SCENE = os.path.join(ssc_runner.ROOT, "prm", "forearm_indentation.prm")
 CSV = os.path.join(HERE, "results", "scene_branches.csv")
-COMMON = ["Run/Write fields=false", "Punch/Section=false",
-          "Punch/Profile length=0", "Punch/Depth error estimate=none"]
-RANKS = 2
+COMMON = NO_PICTURES + ["Punch/Depth error estimate=none"]
 VARIANTS = [
     ("scene", []),
     ("larger increments", ["Nonlinear solver/Easy iterations=6"]),

@@ -20,12 +20,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "common"))
 import ssc_runner  # noqa: E402
 from timing_bars import plot_timings, timing_columns  # noqa: E402
+from main_scene import NO_PICTURES, SCENE  # noqa: E402
+from main_scene import SHIPPED_RANKS as RANKS  # noqa: E402
 
-SCENE = os.path.join(ssc_runner.ROOT, "prm", "forearm_indentation.prm")
 CSV = os.path.join(HERE, "results", "vcycle_reuse.csv")
-COMMON = ["Run/Write fields=false", "Punch/Section=false",
-          "Punch/Profile length=0"]
-RANKS = 2
 KEEP = "Elasticity/Linear solver/Keep V-cycle="
 LIMIT = "Elasticity/Linear solver/Refactorization iterations="
 VARIANTS = [
@@ -40,7 +38,7 @@ def measure(repetitions):
     for repetition in range(repetitions):
         for label, overrides in VARIANTS:
             summary, _ = ssc_runner.run_or_exit(
-                label, SCENE, COMMON + overrides, ranks=RANKS, timeout=3600)
+                label, SCENE, NO_PICTURES + overrides, ranks=RANKS, timeout=3600)
             row = dict(variant=label, repetition=repetition + 1,
                        **timing_columns(summary),
                        uncertainty_mm=" ".join(
