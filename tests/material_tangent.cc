@@ -1,6 +1,8 @@
 // Every registered law of materials/ (made by make_material(), as for a
 // layer, with its default parameters) against
-// finite differences of itself, at a random deformation gradient: the first
+// finite differences of itself, at a random deformation gradient and at an
+// in-plane stretch, at one material point (the fibre-reinforced law's
+// fibres are in tension at both, which the test confirms): the first
 // Piola stress of the isochoric part (tau_iso F^{-T}) plus U'(J) J F^{-T} is
 // the derivative of the energy, the spatial tangent pulled back is the
 // derivative of that stress, the law is objective (tau(QF) = Q tau Q^T), its
@@ -21,6 +23,10 @@ using namespace dealii;
 
 namespace
 {
+  /// The material point every law is evaluated at (a law with a field,
+  /// the fibres along Langer's lines, reads it there).
+  const Point<3> X(0.3, -0.2, -0.5);
+
   /// P = dW/dF by central differences of the energy.
   Tensor<2, 3>
   energy_gradient(const ssc::Material &law, const Tensor<2, 3> &F)
@@ -33,7 +39,7 @@ namespace
           Tensor<2, 3> plus(F), minus(F);
           plus[i][j] += h;
           minus[i][j] -= h;
-          P[i][j] = (law.energy(plus) - law.energy(minus)) / (2 * h);
+          P[i][j] = (law.energy(X, plus) - law.energy(X, minus)) / (2 * h);
         }
     return P;
   }
@@ -44,7 +50,7 @@ namespace
   {
     SymmetricTensor<2, 3> tau;
     Tensor<4, 3>          a;
-    law.isochoric_response(F, tau, a);
+    law.isochoric_response(X, F, tau, a);
     return Tensor<2, 3>(tau) * transpose(invert(F));
   }
 
@@ -68,10 +74,16 @@ main(int argc, char **argv)
   initlog();
   std::mt19937                           generator(11);
   std::uniform_real_distribution<double> uniform(-0.25, 0.25);
-  Tensor<2, 3>                           F = unit_symmetric_tensor<3>();
+  Tensor<2, 3>                           random = unit_symmetric_tensor<3>();
   for (unsigned int i = 0; i < 3; ++i)
     for (unsigned int j = 0; j < 3; ++j)
-      F[i][j] += uniform(generator);
+      random[i][j] += uniform(generator);
+  // the random state leaves the fibres of the Gasser-Ogden-Holzapfel law
+  // slack; a stretch in the plane of the skin puts both families in tension
+  Tensor<2, 3> stretched = 0.2 * (random - unit_symmetric_tensor<3>());
+  stretched[0][0] += 1.3;
+  stretched[1][1] += 1.2;
+  stretched[2][2] += 0.7;
   // a rotation for the objectivity check
   const Tensor<1, 3> axis  = Tensor<1, 3>({2., -1., 2.}) / 3.;
   const double       angle = 1.1;
@@ -81,92 +93,116 @@ main(int argc, char **argv)
   const Tensor<2, 3> Q = std::cos(angle) * unit_symmetric_tensor<3>() +
                          std::sin(angle) * cross +
                          (1. - std::cos(angle)) * outer_product(axis, axis);
-  deallog << "det F = " << determinant(F) << std::endl;
-
-  for (const std::string &name : ssc::MaterialRegistry::names())
+  for (const auto &[state, F] :
+       {std::make_pair(std::string("random F"), random),
+        std::make_pair(std::string("stretched"), stretched)})
     {
-      ssc::Layer layer;
-      layer.youngs_modulus    = 0.02;
-      layer.poisson_ratio     = 0.45;
-      layer.material_model    = name;
-      const auto         law  = ssc::make_material(layer);
-      const double       mu   = law->moduli().shear_modulus;
-      const double       J    = determinant(F);
-      const Tensor<2, 3> P_fd = energy_gradient(*law, F);
-      Tensor<2, 3>       P;
-      if (law->kinematics() == ssc::Kinematics::small_strain)
-        P = Tensor<2, 3>(law->cauchy_stress(F));
-      else
-        P = isochoric_piola(*law, F) +
-            law->volumetric().pressure(J) * J * transpose(invert(F));
-      deallog << name << ": stress is the derivative of the energy: "
-              << (largest(P - P_fd) < 1e-8 * largest(P) ? "yes" : "no")
-              << std::endl;
+      deallog << state << ": det F = " << determinant(F) << std::endl;
+      for (const std::string &name : ssc::MaterialRegistry::names())
+        {
+          ssc::Layer layer;
+          layer.youngs_modulus    = 0.02;
+          layer.poisson_ratio     = 0.45;
+          layer.material_model    = name;
+          const auto         law  = ssc::make_material(layer);
+          const double       mu   = law->moduli().shear_modulus;
+          const double       J    = determinant(F);
+          const Tensor<2, 3> P_fd = energy_gradient(*law, F);
+          Tensor<2, 3>       P;
+          if (law->kinematics() == ssc::Kinematics::small_strain)
+            P = Tensor<2, 3>(law->cauchy_stress(X, F));
+          else
+            P = isochoric_piola(*law, F) +
+                law->volumetric().pressure(J) * J * transpose(invert(F));
+          deallog << name << ", " << state
+                  << ": stress is the derivative of the energy: "
+                  << (largest(P - P_fd) < 1e-8 * largest(P) ? "yes" : "no")
+                  << std::endl;
 
-      // the tangent: A_iKjL = F^{-1}_Kk a_ikjl F^{-1}_Ll against dP/dF
-      SymmetricTensor<2, 3> tau;
-      Tensor<4, 3>          a, A, A_fd;
-      law->isochoric_response(F, tau, a);
-      const Tensor<2, 3> F_inverse = invert(F);
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int K = 0; K < 3; ++K)
+          // the tangent: A_iKjL = F^{-1}_Kk a_ikjl F^{-1}_Ll against dP/dF
+          SymmetricTensor<2, 3> tau;
+          Tensor<4, 3>          a, A, A_fd;
+          law->isochoric_response(X, F, tau, a);
+          const Tensor<2, 3> F_inverse = invert(F);
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int K = 0; K < 3; ++K)
+              for (unsigned int j = 0; j < 3; ++j)
+                for (unsigned int L = 0; L < 3; ++L)
+                  for (unsigned int k = 0; k < 3; ++k)
+                    for (unsigned int l = 0; l < 3; ++l)
+                      A[i][K][j][L] +=
+                        F_inverse[K][k] * a[i][k][j][l] * F_inverse[L][l];
+          const double h = 1e-6;
           for (unsigned int j = 0; j < 3; ++j)
             for (unsigned int L = 0; L < 3; ++L)
-              for (unsigned int k = 0; k < 3; ++k)
-                for (unsigned int l = 0; l < 3; ++l)
-                  A[i][K][j][L] +=
-                    F_inverse[K][k] * a[i][k][j][l] * F_inverse[L][l];
-      const double h = 1e-6;
-      for (unsigned int j = 0; j < 3; ++j)
-        for (unsigned int L = 0; L < 3; ++L)
-          {
-            Tensor<2, 3> plus(F), minus(F);
-            plus[j][L] += h;
-            minus[j][L] -= h;
-            const Tensor<2, 3> dP =
-              (isochoric_piola(*law, plus) - isochoric_piola(*law, minus)) /
-              (2 * h);
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int K = 0; K < 3; ++K)
-                A_fd[i][K][j][L] = dP[i][K];
-          }
-      // the linear law's isochoric response is the small-strain one, whose
-      // "tangent" is that of sigma in eps, not of tau F^{-T}
-      if (law->kinematics() == ssc::Kinematics::finite_strain)
-        deallog << name << ": tangent is the derivative of the stress: "
-                << (largest(A - A_fd) < 1e-6 * largest(A) ? "yes" : "no")
-                << std::endl;
+              {
+                Tensor<2, 3> plus(F), minus(F);
+                plus[j][L] += h;
+                minus[j][L] -= h;
+                const Tensor<2, 3> dP =
+                  (isochoric_piola(*law, plus) - isochoric_piola(*law, minus)) /
+                  (2 * h);
+                for (unsigned int i = 0; i < 3; ++i)
+                  for (unsigned int K = 0; K < 3; ++K)
+                    A_fd[i][K][j][L] = dP[i][K];
+              }
+          // the linear law's isochoric response is the small-strain one, whose
+          // "tangent" is that of sigma in eps, not of tau F^{-T}
+          if (law->kinematics() == ssc::Kinematics::finite_strain)
+            deallog << name << ", " << state
+                    << ": tangent is the derivative of the stress: "
+                    << (largest(A - A_fd) < 1e-6 * largest(A) ? "yes" : "no")
+                    << std::endl;
 
-      SymmetricTensor<2, 3> tau_rotated;
-      law->isochoric_response(Q * F, tau_rotated, a);
-      if (law->kinematics() == ssc::Kinematics::finite_strain)
-        deallog << name << ": objective: "
-                << (largest(Tensor<2, 3>(tau_rotated) -
-                            Q * Tensor<2, 3>(tau) * transpose(Q)) <
-                        1e-12 * largest(Tensor<2, 3>(tau)) ?
-                      "yes" :
-                      "no")
-                << std::endl;
+          SymmetricTensor<2, 3> tau_rotated;
+          law->isochoric_response(X, Q * F, tau_rotated, a);
+          if (law->kinematics() == ssc::Kinematics::finite_strain)
+            deallog << name << ", " << state << ": objective: "
+                    << (largest(Tensor<2, 3>(tau_rotated) -
+                                Q * Tensor<2, 3>(tau) * transpose(Q)) <
+                            1e-12 * largest(Tensor<2, 3>(tau)) ?
+                          "yes" :
+                          "no")
+                    << std::endl;
 
-      // the residual's stress-only path (Material::isochoric_stress())
-      if (law->kinematics() == ssc::Kinematics::finite_strain)
-        deallog << name << ": the stress alone is the response's stress: "
-                << (largest(Tensor<2, 3>(law->isochoric_stress(F) - tau)) <=
-                        1e-14 * largest(Tensor<2, 3>(tau)) ?
-                      "yes" :
-                      "no")
-                << std::endl;
+          // the residual's stress-only path (Material::isochoric_stress())
+          if (law->kinematics() == ssc::Kinematics::finite_strain)
+            deallog << name << ", " << state
+                    << ": the stress alone is the response's stress: "
+                    << (largest(
+                          Tensor<2, 3>(law->isochoric_stress(X, F) - tau)) <=
+                            1e-14 * largest(Tensor<2, 3>(tau)) ?
+                          "yes" :
+                          "no")
+                    << std::endl;
 
-      const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
-      const SymmetricTensor<4, 3> isotropic =
-        2. * mu * (identity_tensor<3>() - 1. / 3. * outer_product(I, I));
-      const SymmetricTensor<4, 3> difference =
-        law->small_strain_tangent() - isotropic;
-      double error = 0;
-      for (unsigned int k = 0; k < difference.n_independent_components; ++k)
-        error = std::max(error, std::abs(difference.access_raw_entry(k)));
-      deallog << name << ": small-strain tangent 2 mu (I^s - 1/3 1 (x) 1): "
-              << (error < 1e-12 * mu ? "yes" : "no") << std::endl;
+          const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
+          const SymmetricTensor<4, 3> isotropic =
+            2. * mu * (identity_tensor<3>() - 1. / 3. * outer_product(I, I));
+          const SymmetricTensor<4, 3> difference =
+            law->small_strain_tangent() - isotropic;
+          double error = 0;
+          for (unsigned int k = 0; k < difference.n_independent_components; ++k)
+            error = std::max(error, std::abs(difference.access_raw_entry(k)));
+          deallog << name << ", " << state
+                  << ": small-strain tangent 2 mu (I^s - 1/3 1 (x) 1): "
+                  << (error < 1e-12 * mu ? "yes" : "no") << std::endl;
+
+          // whether the state puts the fibres in tension: the stress differs
+          // from that of the matrix alone
+          if (name == "Gasser-Ogden-Holzapfel")
+            {
+              layer.material_model = "neo-Hookean";
+              const auto matrix    = ssc::make_material(layer);
+              deallog << name << ", " << state << ": fibres in tension: "
+                      << (largest(Tensor<2, 3>(
+                            law->isochoric_stress(X, F) -
+                            matrix->isochoric_stress(X, F))) > 1e-3 * mu ?
+                            "yes" :
+                            "no")
+                      << std::endl;
+            }
+        }
     }
 
   // both volumetric energies: U' and U'' are the derivatives of U, and U

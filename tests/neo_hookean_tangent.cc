@@ -20,6 +20,10 @@
 // weight that differs between its triangles) has the tangent of its residual
 // too, and with uniform growth of both the rotated expansion is stress-free for
 // it as well; at small strain the expansion by g / 3 is (the eigenstrain).
+// The fibre-reinforced law (Gasser-Ogden-Holzapfel, Langer's lines turning
+// across the block, fibres in tension) in both formulations, with growth:
+// the kernel evaluates it at the elastic part F_e of F, so the rotated
+// expansion leaves its fibres slack and the block stress-free too.
 
 #include <deal.II/dofs/dof_tools.h>
 
@@ -125,7 +129,9 @@ main(int argc, char **argv)
         "Q2, neo-Hookean, mean dilatation + membrane + cable",
         "neo-Hookean, mixed + growing membrane, growth",
         "neo-Hookean, mixed + growing tension-field membrane, growth",
-        "linear, displacement + growing membrane, growth"})
+        "linear, displacement + growing membrane, growth",
+        "Gasser-Ogden-Holzapfel, displacement",
+        "Gasser-Ogden-Holzapfel, mixed, growth"})
     {
       for (unsigned int l = 0; l < 2; ++l)
         layers.set_model(l,
@@ -133,6 +139,8 @@ main(int argc, char **argv)
                            std::string("corotational") :
                          variant.find("linear") == 0 ?
                            std::string("linear") :
+                         variant.find("Gasser") == 0 ?
+                           std::string("Gasser-Ogden-Holzapfel") :
                            std::string("neo-Hookean"));
       const bool   tension_only = variant.find("tension") != std::string::npos;
       const bool   growth       = variant.find("growth") != std::string::npos;
@@ -152,7 +160,17 @@ main(int argc, char **argv)
       parameters.degree      = variant.find("Q2") == 0 ? 2 : 1;
       if (variant.find("stabilisation") != std::string::npos)
         parameters.volumetric_stabilisation = 0.1;
-      QuietElasticity     quiet(mesh, layers, parameters);
+      // the fibre-reinforced law with Langer's lines that turn across the
+      // block, so that each quadrature point has fibres of its own
+      ssc::LayerLawParameters laws;
+      ParameterHandler        prm;
+      laws.add_parameters(prm, layers.layer_names());
+      for (const std::string &layer : layers.layer_names())
+        prm.parse_input_from_string(
+          "subsection Layer stack\n subsection " + layer +
+          "\n  subsection Gasser-Ogden-Holzapfel\n"
+          "   set Langer line angle = 30 + 20 * x - 10 * y\n  end\n end\nend\n");
+      QuietElasticity     quiet(mesh, layers, parameters, laws);
       ssc::ElasticSystem &elasticity = quiet.elasticity;
       elasticity.field().distribute_dofs();
       elasticity.setup({});

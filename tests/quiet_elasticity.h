@@ -27,18 +27,20 @@ uniform_patch(const double length, const double cell_size)
 
 /// An ElasticSystem with a timer that never reports and an output stream
 /// that is off; the system keeps a reference to the timer, so both live
-/// beside it.
+/// beside it. The laws take the parameters of @p laws (their defaults if
+/// not given).
 struct QuietElasticity
 {
   QuietElasticity(ssc::BackgroundMesh             &mesh,
                   const ssc::LayerStack           &layers,
-                  const ssc::ElasticityParameters &parameters)
+                  const ssc::ElasticityParameters &parameters,
+                  const ssc::LayerLawParameters   &laws = {})
     : timer(MPI_COMM_WORLD,
             std::cout,
             dealii::TimerOutput::never,
             dealii::TimerOutput::wall_times)
     , pcout(std::cout, false)
-    , elasticity(mesh, ssc::LayerMaterials(layers, {}), parameters, timer)
+    , elasticity(mesh, ssc::LayerMaterials(layers, laws), parameters, timer)
   {}
 
   dealii::TimerOutput        timer;

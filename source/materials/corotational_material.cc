@@ -26,7 +26,8 @@ namespace ssc
 
 
   void
-  CorotationalMaterial::isochoric_response(const Tensor<2, 3>    &F,
+  CorotationalMaterial::isochoric_response(const Point<3> &,
+                                           const Tensor<2, 3>    &F,
                                            SymmetricTensor<2, 3> &tau,
                                            Tensor<4, 3>          &tangent) const
   {
@@ -91,7 +92,7 @@ namespace ssc
 
 
   double
-  CorotationalMaterial::energy(const Tensor<2, 3> &F) const
+  CorotationalMaterial::energy(const Point<3> &, const Tensor<2, 3> &F) const
   {
     Tensor<2, 3> R, U;
     polar_decomposition(F, R, U);

@@ -3,7 +3,8 @@
 namespace ssc
 {
   void
-  LinearElasticMaterial::isochoric_response(const Tensor<2, 3>    &F,
+  LinearElasticMaterial::isochoric_response(const Point<3> &,
+                                            const Tensor<2, 3>    &F,
                                             SymmetricTensor<2, 3> &tau,
                                             Tensor<4, 3> &tangent) const
   {
@@ -19,7 +20,7 @@ namespace ssc
 
 
   double
-  LinearElasticMaterial::energy(const Tensor<2, 3> &F) const
+  LinearElasticMaterial::energy(const Point<3> &, const Tensor<2, 3> &F) const
   {
     const SymmetricTensor<2, 3> eps =
       symmetrize(F - unit_symmetric_tensor<3>());
@@ -30,7 +31,8 @@ namespace ssc
 
 
   SymmetricTensor<2, 3>
-  LinearElasticMaterial::cauchy_stress(const Tensor<2, 3> &F,
+  LinearElasticMaterial::cauchy_stress(const Point<3> &,
+                                       const Tensor<2, 3> &F,
                                        const double        gamma) const
   {
     // the eigenstrain (gamma - 1)/3 I of growth

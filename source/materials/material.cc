@@ -12,23 +12,26 @@ namespace ssc
 
 
   SymmetricTensor<2, 3>
-  Material::isochoric_stress(const Tensor<2, 3> &F) const
+  Material::isochoric_stress(const Point<3> &X, const Tensor<2, 3> &F) const
   {
     SymmetricTensor<2, 3> tau;
     Tensor<4, 3>          tangent;
-    isochoric_response(F, tau, tangent);
+    isochoric_response(X, F, tau, tangent);
     return tau;
   }
 
 
   SymmetricTensor<2, 3>
-  Material::cauchy_stress(const Tensor<2, 3> &F, const double gamma) const
+  Material::cauchy_stress(const Point<3>     &X,
+                          const Tensor<2, 3> &F,
+                          const double        gamma) const
   {
-    // the energy gamma (W_iso(F) + U(J / gamma)) of growth F_g = gamma^{1/3}
-    // I: tau = gamma tau_iso + J U'(J / gamma) I
+    // the energy gamma (W_iso(F_e) + U(J / gamma)) of growth F_g =
+    // gamma^{1/3} I: tau = gamma tau_iso(F_e) + J U'(J / gamma) I
     const double J = determinant(F);
     Assert(J > 0, ExcMessage("Cauchy stress of an inverted state."));
-    const SymmetricTensor<2, 3> tau = isochoric_stress(F);
+    const SymmetricTensor<2, 3> tau =
+      isochoric_stress(X, gamma == 1. ? F : std::cbrt(1. / gamma) * F);
     return (gamma * tau + J * volumetric_energy.pressure(J / gamma) *
                             unit_symmetric_tensor<3>()) /
            J;
@@ -40,7 +43,7 @@ namespace ssc
   {
     SymmetricTensor<2, 3> tau;
     Tensor<4, 3>          a;
-    isochoric_response(unit_symmetric_tensor<3>(), tau, a);
+    isochoric_response(Point<3>(), unit_symmetric_tensor<3>(), tau, a);
     // at F = I the stress vanishes and the tangent of an objective law has
     // the minor symmetries; symmetrising keeps exactly that part
     SymmetricTensor<4, 3> c;

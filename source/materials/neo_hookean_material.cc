@@ -16,7 +16,8 @@ namespace ssc
 
 
   SymmetricTensor<2, 3>
-  NeoHookeanMaterial::isochoric_stress(const Tensor<2, 3> &F) const
+  NeoHookeanMaterial::isochoric_stress(const Point<3> &,
+                                       const Tensor<2, 3> &F) const
   {
     Assert(determinant(F) > 0, ExcMessage("det F <= 0"));
     return reference_moduli.shear_modulus * deviator(isochoric_left_stretch(F));
@@ -24,7 +25,8 @@ namespace ssc
 
 
   void
-  NeoHookeanMaterial::isochoric_response(const Tensor<2, 3>    &F,
+  NeoHookeanMaterial::isochoric_response(const Point<3> &,
+                                         const Tensor<2, 3>    &F,
                                          SymmetricTensor<2, 3> &tau,
                                          Tensor<4, 3>          &tangent) const
   {
@@ -46,7 +48,7 @@ namespace ssc
 
 
   double
-  NeoHookeanMaterial::energy(const Tensor<2, 3> &F) const
+  NeoHookeanMaterial::energy(const Point<3> &, const Tensor<2, 3> &F) const
   {
     const double J = determinant(F);
     return 0.5 * reference_moduli.shear_modulus *

@@ -41,7 +41,8 @@ namespace ssc
       }
 
       void
-      isochoric_response(const Tensor<2, 3>    &F,
+      isochoric_response(const Point<3> &,
+                         const Tensor<2, 3>    &F,
                          SymmetricTensor<2, 3> &tau,
                          Tensor<4, 3>          &tangent) const override
       {
@@ -92,7 +93,7 @@ namespace ssc
       }
 
       double
-      energy(const Tensor<2, 3> &F) const override
+      energy(const Point<3> &, const Tensor<2, 3> &F) const override
       {
         const SymmetricTensor<2, 3> C = symmetrize(transpose(F) * F);
         const SymmetricTensor<2, 3> E_bar =

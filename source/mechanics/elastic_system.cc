@@ -9,6 +9,7 @@
 
 #include <limits>
 
+#include <ssc/base/collective_error.h>
 #include <ssc/mechanics/elastic_system.h>
 
 namespace ssc
@@ -86,6 +87,28 @@ namespace ssc
 
 
   void
+  ElasticSystem::check_laws_at_quadrature_points() const
+  {
+    FEValues<3> fe_values(displacement.mapping(),
+                          displacement.fe(),
+                          kernel.quadrature(),
+                          update_quadrature_points);
+    run_collectively(
+      [&]() {
+        for (const auto &cell :
+             displacement.dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              fe_values.reinit(cell);
+              for (const Point<3> &X : fe_values.get_quadrature_points())
+                layer_materials[cell->material_id()].check_point(X);
+            }
+      },
+      displacement.dof_handler().get_triangulation().get_communicator());
+  }
+
+
+  void
   ElasticSystem::setup(const std::vector<DirichletCondition> &conditions,
                        const std::vector<TiedCondition>      &ties)
   {
@@ -96,6 +119,7 @@ namespace ssc
     history.initialize(displacement.dof_handler().get_triangulation(),
                        n_history_variables,
                        Utilities::pow(parameters.degree + 1, 3));
+    check_laws_at_quadrature_points();
     displacement.set_relevant_dofs(boundary_constraints.relevant_dofs());
     const IndexSet &owned = displacement.locally_owned_dofs();
     const MPI_Comm  communicator =

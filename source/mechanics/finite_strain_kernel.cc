@@ -179,16 +179,19 @@ namespace ssc
         const double       JxW   = fe_values.JxW(q);
         const double       J     = determinant(F[q]);
         const Tensor<2, 3> F_inv = invert(F[q]);
-        // Growth F_g = gamma^{1/3} I with the energy gamma W(F F_g^{-1}):
-        // the isochoric part depends on J^{-1/3} F only, so it is scaled by
-        // gamma; the volumetric part sees J_e = J / gamma.
+        // Growth F_g = gamma^{1/3} I with the energy gamma W(F_e), F_e =
+        // F F_g^{-1}: the isochoric part at F_e, its stress and spatial
+        // tangent scaled by gamma; the volumetric part sees J_e = J / gamma.
+        const Tensor<2, 3> F_e =
+          gamma[q] == 1. ? F[q] : std::cbrt(1. / gamma[q]) * F[q];
+        const Point<3> &X = fe_values.quadrature_point(q);
         if (with_matrix)
           {
-            material.isochoric_response(F[q], tau, T);
+            material.isochoric_response(X, F_e, tau, T);
             T *= gamma[q];
           }
         else
-          tau = material.isochoric_stress(F[q]);
+          tau = material.isochoric_stress(X, F_e);
         tau *= gamma[q];
         const double J_e = J / gamma[q];
         double       p   = beta * volumetric.pressure(J_e);

@@ -22,7 +22,8 @@ namespace ssc
     FEValues<3>                        fe_values(field.mapping(),
                           field.fe(),
                           quadrature,
-                          update_gradients | update_JxW_values);
+                          update_gradients | update_quadrature_points |
+                            update_JxW_values);
     const FEValuesExtractors::Vector   displacement(0);
     std::vector<Tensor<2, 3>>          gradients(quadrature.size());
     std::vector<SymmetricTensor<2, 3>> stresses(
@@ -48,8 +49,10 @@ namespace ssc
                   volume = std::numeric_limits<double>::quiet_NaN();
                   break;
                 }
-              sigma += law.cauchy_stress(F, 1. + growth.at(cell, q)) * J *
-                       fe_values.JxW(q);
+              sigma += law.cauchy_stress(fe_values.quadrature_point(q),
+                                         F,
+                                         1. + growth.at(cell, q)) *
+                       J * fe_values.JxW(q);
               volume += J * fe_values.JxW(q);
             }
           stresses[cell->active_cell_index()] = sigma / volume;

@@ -151,7 +151,7 @@ namespace ssc
         const Tensor<2, 3> F   = unit_symmetric_tensor<3>() + gradient[k];
         const double       mises =
           law.kinematics() == Kinematics::small_strain || determinant(F) > 0 ?
-                  von_mises(law.cauchy_stress(F)) :
+                  von_mises(law.cauchy_stress(points[k], F)) :
                   std::numeric_limits<double>::quiet_NaN();
         csv << points[k][0] << ',' << points[k][2] << ',' << l << ',' << u[k][0]
             << ',' << u[k][2] << ',' << 1e3 * mises << '\n';

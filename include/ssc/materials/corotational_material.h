@@ -43,12 +43,13 @@ namespace ssc
     }
 
     void
-    isochoric_response(const Tensor<2, 3>    &F,
+    isochoric_response(const Point<3>        &X,
+                       const Tensor<2, 3>    &F,
                        SymmetricTensor<2, 3> &tau,
                        Tensor<4, 3>          &tangent) const override;
 
     double
-    energy(const Tensor<2, 3> &F) const override;
+    energy(const Point<3> &X, const Tensor<2, 3> &F) const override;
 
     /// First Piola stress @p P of the isochoric part and its derivative
     /// @p A (A[i][j][k][l] = dP_ij / dF_kl) at @p F (det F > 0).

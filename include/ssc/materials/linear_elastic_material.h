@@ -34,15 +34,17 @@ namespace ssc
     }
 
     void
-    isochoric_response(const Tensor<2, 3>    &F,
+    isochoric_response(const Point<3>        &X,
+                       const Tensor<2, 3>    &F,
                        SymmetricTensor<2, 3> &tau,
                        Tensor<4, 3>          &tangent) const override;
 
     double
-    energy(const Tensor<2, 3> &F) const override;
+    energy(const Point<3> &X, const Tensor<2, 3> &F) const override;
 
     SymmetricTensor<2, 3>
-    cauchy_stress(const Tensor<2, 3> &F,
+    cauchy_stress(const Point<3>     &X,
+                  const Tensor<2, 3> &F,
                   const double        gamma = 1.) const override;
   };
 } // namespace ssc

@@ -1,6 +1,7 @@
 #ifndef ssc_materials_material_h
 #define ssc_materials_material_h
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
@@ -22,9 +23,12 @@ namespace ssc
 
   /**
    * The constitutive law of one layer: stress and consistent tangent from
-   * the deformation gradient F, split into an isochoric part and the
-   * volumetric energy U(J) (VolumetricEnergy), so that the mixed
-   * formulations can replace J by its projection.
+   * the deformation gradient F, split into the volumetric energy U(J)
+   * (VolumetricEnergy), which the mixed formulations evaluate at the
+   * projected dilatation, and the rest of the energy, called the isochoric
+   * part: a function of J^{-1/3} F alone for the isotropic laws; the fibre
+   * term of the fibre-reinforced law also sees the volume change (its
+   * header says why).
    *
    * The isochoric part is given in the spatial form the finite-strain kernel
    * assembles: the Kirchhoff stress tau = P F^T and the spatial tangent
@@ -33,9 +37,14 @@ namespace ssc
    * grad(du)_{ik} a_{ikjl} grad(Du)_{jl} with current gradients. A law
    * written in the first Piola form converts with push_forward().
    *
-   * Growth (F = F_e F_g with F_g = gamma^{1/3} I and the energy gamma W(F_e))
-   * relies on the isochoric part depending on F only through J^{-1/3} F, as
-   * the laws here do: then gamma W_iso(F_e) = gamma W_iso(F).
+   * Growth (F = F_e F_g with F_g = gamma^{1/3} I and the energy gamma W(F_e)):
+   * the kernel evaluates the isochoric part at F_e = gamma^{-1/3} F and
+   * scales its stress and spatial tangent by gamma (tau = gamma tau(F_e),
+   * a = gamma a(F_e)), which holds for every law; U sees J_e = J / gamma.
+   *
+   * Every response takes the reference position X of the material point:
+   * a law with a field (fibre directions along Langer's lines) evaluates it
+   * there; the uniform laws ignore it.
    *
    * A new law is one class derived from this one, registered in its own
    * source file (register_material(), materials/material_registry.h) with
@@ -65,10 +74,23 @@ namespace ssc
       return 0;
     }
 
-    /// Isochoric Kirchhoff stress @p tau and spatial tangent @p tangent per
-    /// unit reference volume at @p F (det F > 0).
+    /// Throws, saying where, if the law cannot be evaluated at the material
+    /// point @p X (a field of the law, such as a fibre map, undefined
+    /// there). The mechanics calls it at every quadrature point before the
+    /// first assembly, so that a bad field is a message, not an exception
+    /// inside the threaded assembly. Nothing to check for a uniform law.
     virtual void
-    isochoric_response(const Tensor<2, 3>    &F,
+    check_point(const Point<3> &X) const
+    {
+      (void)X;
+    }
+
+    /// Isochoric Kirchhoff stress @p tau and spatial tangent @p tangent per
+    /// unit reference volume at @p F (det F > 0) at the material point of
+    /// reference position @p X.
+    virtual void
+    isochoric_response(const Point<3>        &X,
+                       const Tensor<2, 3>    &F,
                        SymmetricTensor<2, 3> &tau,
                        Tensor<4, 3>          &tangent) const = 0;
 
@@ -77,23 +99,26 @@ namespace ssc
     /// the tangent costs more than the stress (a residual assembly is half
     /// of a Newton iteration's assemblies).
     virtual SymmetricTensor<2, 3>
-    isochoric_stress(const Tensor<2, 3> &F) const;
+    isochoric_stress(const Point<3> &X, const Tensor<2, 3> &F) const;
 
-    /// Strain energy per unit reference volume at @p F: the isochoric part
-    /// plus U(J).
+    /// Strain energy per unit reference volume at @p F at @p X: the
+    /// isochoric part plus U(J).
     virtual double
-    energy(const Tensor<2, 3> &F) const = 0;
+    energy(const Point<3> &X, const Tensor<2, 3> &F) const = 0;
 
-    /// Cauchy stress at @p F with the growth ratio @p gamma = 1 + g
+    /// Cauchy stress at @p F at @p X with the growth ratio @p gamma = 1 + g
     /// (stress-free volume change; small-strain laws: sigma of sym(F - I)
     /// less the eigenstrain): the one stress function that output, section
     /// sampling and the scenes use.
     virtual SymmetricTensor<2, 3>
-    cauchy_stress(const Tensor<2, 3> &F, const double gamma = 1.) const;
+    cauchy_stress(const Point<3>     &X,
+                  const Tensor<2, 3> &F,
+                  const double        gamma = 1.) const;
 
     /// The tangent of the isochoric part at F = I, minor-symmetric: what the
     /// small-strain kernel assembles (with the bulk modulus on the
-    /// volumetric strain).
+    /// volumetric strain). Taken at the origin: every law here is isotropic
+    /// and uniform at F = I (fibres that bear tension only are slack there).
     SymmetricTensor<4, 3>
     small_strain_tangent() const;
 

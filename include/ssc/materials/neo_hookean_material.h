@@ -36,15 +36,16 @@ namespace ssc
     }
 
     void
-    isochoric_response(const Tensor<2, 3>    &F,
+    isochoric_response(const Point<3>        &X,
+                       const Tensor<2, 3>    &F,
                        SymmetricTensor<2, 3> &tau,
                        Tensor<4, 3>          &tangent) const override;
 
     SymmetricTensor<2, 3>
-    isochoric_stress(const Tensor<2, 3> &F) const override;
+    isochoric_stress(const Point<3> &X, const Tensor<2, 3> &F) const override;
 
     double
-    energy(const Tensor<2, 3> &F) const override;
+    energy(const Point<3> &X, const Tensor<2, 3> &F) const override;
   };
 } // namespace ssc
 

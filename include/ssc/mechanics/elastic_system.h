@@ -160,6 +160,11 @@ namespace ssc
     }
 
   private:
+    /// Material::check_point() at every quadrature point (collective): a
+    /// law's field undefined somewhere stops the run with its message.
+    void
+    check_laws_at_quadrature_points() const;
+
     const ElasticityParameters &parameters;
     TimerOutput                &timer;
     LayerMaterials              layer_materials;
