@@ -27,10 +27,8 @@
 #include <sstream>
 
 #include <ssc/materials/gasser_ogden_holzapfel_material.h>
-#include <ssc/nonlinear/elastic_problem.h>
-#include <ssc/nonlinear/load_stepping.h>
-#include <ssc/nonlinear/newton_solver.h>
 
+#include "block_stretch.h"
 #include "quiet_elasticity.h"
 #include "tests.h"
 
@@ -161,41 +159,12 @@ main(int argc, char **argv)
         QuietElasticity     quiet(mesh, layers, parameters, laws);
         ssc::ElasticSystem &elasticity = quiet.elasticity;
         elasticity.field().distribute_dofs();
-        const auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
-        // unit value: the faces move by 1 mm
-        const auto move_x = std::make_shared<Functions::ConstantFunction<3>>(
-          std::vector<double>{1., 0., 0.});
-        const auto move_y = std::make_shared<Functions::ConstantFunction<3>>(
-          std::vector<double>{0., 1., 0.});
-        ComponentMask x(3, false), y(3, false), z(3, false);
-        x.set(0, true);
-        y.set(1, true);
-        z.set(2, true);
-        std::vector<ssc::DirichletCondition> conditions = {
-          {ssc::BoundaryId::x_min, x, zero, {}},
-          {ssc::BoundaryId::x_max, x, move_x, {}},
-          {ssc::BoundaryId::y_min, y, zero, {}},
-          {ssc::BoundaryId::bottom, z, zero, {}}};
-        if (c.equibiaxial)
-          conditions.push_back({ssc::BoundaryId::y_max, y, move_y, {}});
-        elasticity.setup(conditions);
-        ssc::ElasticProblem problem(elasticity);
-        ssc::NewtonSolver   newton(problem,
-                                 newton_parameters,
-                                 quiet.pcout,
-                                 false);
-        ssc::LoadStepper    stepper(newton);
-        double              increment = 0.02;
-        const double        target    = 2. * (c.lambda - 1.); // length 2 mm
-        stepper.follow(
-          0.,
-          std::abs(target),
-          increment,
-          [&](const double load) {
-            elasticity.constraints().set_dirichlet_scale(target > 0 ? load :
-                                                                      -load);
-          },
-          ssc::LoadDependence::right_hand_side);
+        stretch_block(elasticity,
+                      newton_parameters,
+                      quiet.pcout,
+                      c.lambda,
+                      c.equibiaxial,
+                      0.02);
         const double force_x = elasticity.reaction(1)[0];
         const double force_y = c.equibiaxial ? elasticity.reaction(4)[1] : 0.;
         const std::array<double, 2> expected =

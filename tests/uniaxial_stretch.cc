@@ -28,6 +28,7 @@
 #include <ssc/nonlinear/load_stepping.h>
 #include <ssc/nonlinear/newton_solver.h>
 
+#include "block_stretch.h"
 #include "quiet_elasticity.h"
 #include "tests.h"
 
@@ -103,35 +104,8 @@ main(int argc, char **argv)
           QuietElasticity     quiet(mesh, layers, parameters);
           ssc::ElasticSystem &elasticity = quiet.elasticity;
           elasticity.field().distribute_dofs();
-          const auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
-          // unit value: the face x = 1 moves by 1 mm (stretch 1.5 at 1)
-          const auto move = std::make_shared<Functions::ConstantFunction<3>>(
-            std::vector<double>{1., 0., 0.});
-          ComponentMask x(3, false), y(3, false), z(3, false);
-          x.set(0, true);
-          y.set(1, true);
-          z.set(2, true);
-          elasticity.setup({{ssc::BoundaryId::x_min, x, zero, {}},
-                            {ssc::BoundaryId::x_max, x, move, {}},
-                            {ssc::BoundaryId::y_min, y, zero, {}},
-                            {ssc::BoundaryId::bottom, z, zero, {}}});
-          ssc::ElasticProblem problem(elasticity);
-          ssc::NewtonSolver   newton(problem,
-                                   newton_parameters,
-                                   quiet.pcout,
-                                   false);
-          ssc::LoadStepper    stepper(newton);
-          double              increment = 0.1;
-          const double        target    = 2. * (lambda - 1.); // length 2 mm
-          const auto          report    = stepper.follow(
-            0.,
-            std::abs(target),
-            increment,
-            [&](const double load) {
-              elasticity.constraints().set_dirichlet_scale(target > 0 ? load :
-                                                                        -load);
-            },
-            ssc::LoadDependence::right_hand_side);
+          const auto report = stretch_block(
+            elasticity, newton_parameters, quiet.pcout, lambda, false, 0.1);
           const double force    = elasticity.reaction(1)[0];
           const double expected = closed_form_force(model, 0.01, 0.45, lambda);
           std::ostringstream line;
