@@ -31,7 +31,8 @@ namespace ssc
     add_parameters(ParameterHandler &prm) override;
 
     /// Throws, naming the entry, if the Langer-line map is not an
-    /// expression of x and y.
+    /// expression of x and y or not a number at x = y = 0 (elsewhere the
+    /// law's check_point() finds it, at every quadrature point).
     void
     check(const std::string &section) const override;
 
