@@ -6,9 +6,13 @@
 // stretches: uniaxial tension and compression along and across Langer's
 // lines at nu = 0.45 (where the fibres' volume dependence shows), and
 // equibiaxial tension at nu = 0.49999 (a compressible block would collapse
-// under the fibres' 60 MPa). For F = diag(l1, l2, l3) and fibres a0 =
-// (cos phi, sin phi, 0), phi = theta +- gamma, with the lines at theta = 0
-// or 90 degrees the shear terms of the two families cancel and
+// under the fibres' 60 MPa); and equibiaxial again on a
+// block whose stress-free state is stretched in the plane by 1.03 (Layer
+// stack/.../Prestretch: the law at F F_p, F_p = diag(p, p, 1/p^2), the closed
+// form at the stretches l_i of F F_p; the force on x = 1 is still tau_11 over
+// the stretch of F). For F = diag(l1, l2, l3) and fibres a0 = (cos phi, sin
+// phi, 0), phi = theta +- gamma, with the lines at theta = 0 or 90 degrees the
+// shear terms of the two families cancel and
 //   E     = kappa (l1^2 + l2^2 + l3^2)
 //           + (1 - 3 kappa)(l1^2 cos^2 phi + l2^2 sin^2 phi) - 1,
 //   tau_f = 4 <psi'> (kappa l1^2 + (1 - 3 kappa) l1^2 cos^2 phi,
@@ -87,16 +91,22 @@ namespace
   }
 
   /// Closed-form forces (N) on the faces x = 1 and y = 1 of the block
-  /// stretched by @p lambda along x (and along y if @p equibiaxial).
+  /// stretched by @p lambda along x (and along y if @p equibiaxial), its
+  /// stress-free state stretched by @p p in the plane before (the law at
+  /// F diag(p, p, 1/p^2), which keeps the volume: tau is the law's there).
   std::array<double, 2>
   closed_form_forces(const ssc::GasserOgdenHolzapfelParameters &fibres,
                      const double                               theta,
                      const double                               nu,
                      const double                               lambda,
-                     const bool                                 equibiaxial)
+                     const bool                                 equibiaxial,
+                     const double                               p)
   {
     const auto tau = [&](const double l2, const double l3) {
-      return closed_form_kirchhoff(fibres, theta, nu, {lambda, l2, l3});
+      return closed_form_kirchhoff(fibres,
+                                   theta,
+                                   nu,
+                                   {lambda * p, l2 * p, l3 / (p * p)});
     };
     // the thickness stretch that frees z for a given l2
     const auto free_z = [&](const double l2) {
@@ -124,18 +134,22 @@ main(int argc, char **argv)
     double      nu;
     double      lambda;
     bool        equibiaxial;
+    double      prestretch;
   };
   for (const Case &c :
-       {Case{"uniaxial along the lines", 0., 0.45, 1.1, false},
-        Case{"uniaxial across the lines", 90., 0.45, 1.1, false},
-        Case{"uniaxial compression along", 0., 0.45, 0.8, false},
-        Case{"equibiaxial", 0., 0.49999, 1.1, true}})
+       {Case{"uniaxial along the lines", 0., 0.45, 1.1, false, 1.},
+        Case{"uniaxial across the lines", 90., 0.45, 1.1, false, 1.},
+        Case{"uniaxial compression along", 0., 0.45, 0.8, false, 1.},
+        Case{"equibiaxial", 0., 0.49999, 1.1, true, 1.},
+        Case{
+          "equibiaxial, prestretched by 1.03", 0., 0.49999, 1.02, true, 1.03}})
     for (const auto formulation :
          {ssc::Formulation::displacement, ssc::Formulation::mixed})
       {
         ssc::LayerStack layers;
         layers.add_layer("block", ssc::LayerKind::skin, "2", E_matrix, c.nu, 2);
         layers.set_model(0, "Gasser-Ogden-Holzapfel");
+        layers.set_prestretch(0, c.prestretch);
         ssc::BackgroundMesh mesh(layers, uniform_patch(2, 1), MPI_COMM_WORLD);
         mesh.build();
         ssc::LayerLawParameters laws;
@@ -167,8 +181,8 @@ main(int argc, char **argv)
                       0.02);
         const double force_x = elasticity.reaction(1)[0];
         const double force_y = c.equibiaxial ? elasticity.reaction(4)[1] : 0.;
-        const std::array<double, 2> expected =
-          closed_form_forces(fibres, c.theta, c.nu, c.lambda, c.equibiaxial);
+        const std::array<double, 2> expected = closed_form_forces(
+          fibres, c.theta, c.nu, c.lambda, c.equibiaxial, c.prestretch);
         std::ostringstream line;
         line << c.name << ", " << ssc::to_string(formulation) << ", stretch "
              << c.lambda << ": force x " << std::setprecision(6) << force_x

@@ -1,4 +1,5 @@
 #include <ssc/materials/layer_materials.h>
+#include <ssc/materials/prestretched_material.h>
 
 namespace ssc
 {
@@ -84,9 +85,19 @@ namespace ssc
     const MaterialRegistry::Entry &entry =
       MaterialRegistry::get(layer.material_model,
                             "Layer stack/" + layer.name + "/Material model");
-    return entry.make_law(IsotropicModuli(layer.youngs_modulus,
-                                          layer.poisson_ratio),
-                          laws.of(layer.name, layer.material_model));
+    auto law =
+      entry.make_law(IsotropicModuli(layer.youngs_modulus, layer.poisson_ratio),
+                     laws.of(layer.name, layer.material_model));
+    if (layer.prestretch == 1.)
+      return law;
+    AssertThrow(law->kinematics() == Kinematics::finite_strain,
+                ExcMessage("Layer stack/" + layer.name +
+                           "/Prestretch needs a finite-strain law: '" +
+                           layer.material_model +
+                           "' is assembled at small strain, which would "
+                           "miss the pre-stress."));
+    return std::make_unique<PrestretchedMaterial>(std::move(law),
+                                                  layer.prestretch);
   }
 
 

@@ -169,6 +169,18 @@ namespace ssc
                           "the SAT, < 1 the flat lobules of the DAT.",
                           Patterns::Double(0.1, 10));
         prm.add_parameter(
+          "Prestretch",
+          layer.prestretch,
+          "The in-plane stretch of the layer as imaged over its stress-free "
+          "state (1: none): the layer carries the in vivo pre-tension of "
+          "the deformation diag(s, s, 1/s^2) before any load, held by the "
+          "patch's sides (with free sides it contracts there). Skin: about "
+          "6 N/m on the lower anterior forearm "
+          "and 11 N/m on the upper (Flynn et al. 2011, Ann Biomed Eng "
+          "39:1935), a prestretch of about 1.2 in porcine skin (Buganza "
+          "Tepole et al. 2015). Finite-strain laws only.",
+          Patterns::Double(0.5, 2.));
+        prm.add_parameter(
           "Material model",
           layer.material_model,
           "The constitutive law of this layer, by name: linear (small strain), "

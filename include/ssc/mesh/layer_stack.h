@@ -69,6 +69,10 @@ namespace ssc
     /// The name of the constitutive law (a law of the MaterialRegistry,
     /// which checks it).
     std::string material_model = "linear";
+    /// The in-plane stretch of the layer's in vivo state over its
+    /// stress-free one (1: none): the imaged geometry is pre-tensioned
+    /// (PrestretchedMaterial).
+    double prestretch = 1;
 
     /// Whether this layer can carry lobules (kind SAT or DAT).
     bool
@@ -190,6 +194,13 @@ namespace ssc
     set_model(const unsigned int i, const std::string &material_model)
     {
       layers[i].material_model = material_model;
+    }
+
+    /// Sets the prestretch of layer @p i (tests, benchmarks).
+    void
+    set_prestretch(const unsigned int i, const double prestretch)
+    {
+      layers[i].prestretch = prestretch;
     }
 
     /// Adds a layer programmatically (tests, benchmarks).
