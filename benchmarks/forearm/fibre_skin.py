@@ -1,9 +1,12 @@
 #!/usr/bin/python3
-"""What does fibre-reinforced skin change in the main scene?
+"""What do fibre-reinforced and pre-tensioned skin change in the main scene?
 prm/forearm_indentation.prm to 1.8 N as `./ssc.sh run` runs it (two MPI
 ranks, CG with the V-cycle; no error estimate, no fields), with the skin
 
 - isotropic (the shipped neo-Hookean, nu 0.49);
+- isotropic and pre-tensioned: Prestretch 1.155, the plane tension
+  h mu (s^2 - s^-4) = 6.2 N/m of the lower anterior forearm (Flynn et al.
+  2011, Ann Biomed Eng 39:1935);
 - fibre-reinforced (Gasser-Ogden-Holzapfel with the region's sourced
   fibres, Ni Annaidh et al. 2012) at nu 0.49999 (what the fibres need),
   Langer's lines across x (90 degrees, the forearm's if x runs along it)
@@ -44,6 +47,7 @@ FIBRES = ["Layer stack/skin/Material model=Gasser-Ogden-Holzapfel",
           "Layer stack/skin/Poisson's ratio=0.49999"]
 VARIANTS = [
     ("isotropic skin (the scene)", []),
+    ("isotropic skin, pre-tension 6.2 N/m", ["Layer stack/skin/Prestretch=1.155"]),
     ("fibres, lines across x", FIBRES),
     ("fibres, lines along x",
      FIBRES + ["Layer stack/skin/Gasser-Ogden-Holzapfel/Langer line angle=0"]),
