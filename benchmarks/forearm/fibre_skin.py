@@ -137,7 +137,8 @@ def plot():
     right.set_xlim(-15., 15.)
     right.set_title("the dimple along x, scaled by its depth", fontsize=10)
     right.legend(fontsize=7)
-    fig.suptitle("main scene with fibre-reinforced skin (2 ranks, CG with "
+    fig.suptitle("main scene with fibre-reinforced or pre-tensioned skin "
+                 "(2 ranks, CG with "
                  "the V-cycle)", fontsize=10)
     fig.tight_layout()
     fig.savefig(CSV.replace(".csv", ".png"), dpi=120)
