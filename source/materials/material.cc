@@ -31,7 +31,7 @@ namespace ssc
     const double J = determinant(F);
     Assert(J > 0, ExcMessage("Cauchy stress of an inverted state."));
     const SymmetricTensor<2, 3> tau =
-      isochoric_stress(X, gamma == 1. ? F : std::cbrt(1. / gamma) * F);
+      isochoric_stress(X, elastic_part(F, gamma));
     return (gamma * tau + J * volumetric_energy.pressure(J / gamma) *
                             unit_symmetric_tensor<3>()) /
            J;

@@ -182,9 +182,8 @@ namespace ssc
         // Growth F_g = gamma^{1/3} I with the energy gamma W(F_e), F_e =
         // F F_g^{-1}: the isochoric part at F_e, its stress and spatial
         // tangent scaled by gamma; the volumetric part sees J_e = J / gamma.
-        const Tensor<2, 3> F_e =
-          gamma[q] == 1. ? F[q] : std::cbrt(1. / gamma[q]) * F[q];
-        const Point<3> &X = fe_values.quadrature_point(q);
+        const Tensor<2, 3> F_e = elastic_part(F[q], gamma[q]);
+        const Point<3>    &X   = fe_values.quadrature_point(q);
         if (with_matrix)
           {
             material.isochoric_response(X, F_e, tau, T);

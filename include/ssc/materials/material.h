@@ -5,6 +5,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <cmath>
+
 #include <ssc/materials/isotropic_moduli.h>
 #include <ssc/materials/volumetric_energy.h>
 
@@ -139,6 +141,16 @@ namespace ssc
     const IsotropicModuli  reference_moduli;
     const VolumetricEnergy volumetric_energy;
   };
+
+
+  /// The elastic part F_e = F F_g^{-1} of @p F under the growth F_g =
+  /// gamma^{1/3} I (@p gamma = 1 + g): where the kernel and cauchy_stress()
+  /// evaluate a law (Material).
+  inline Tensor<2, 3>
+  elastic_part(const Tensor<2, 3> &F, const double gamma)
+  {
+    return gamma == 1. ? F : std::cbrt(1. / gamma) * F;
+  }
 
 
   /**
