@@ -79,7 +79,7 @@ namespace ssc
   }
 
 
-  std::unique_ptr<const Material>
+  std::unique_ptr<Material>
   make_material(const Layer &layer, const LayerLawParameters &laws)
   {
     const MaterialRegistry::Entry &entry =
@@ -105,7 +105,20 @@ namespace ssc
                                  const LayerLawParameters &laws)
   {
     for (unsigned int l = 0; l < layers.n_layers(); ++l)
-      materials.push_back(make_material(layers.layer(l), laws));
+      {
+        std::unique_ptr<Material> law = make_material(layers.layer(l), laws);
+        if (auto *p = dynamic_cast<PrestretchedMaterial *>(law.get()))
+          prestretched.push_back(p);
+        materials.push_back(std::move(law));
+      }
+  }
+
+
+  void
+  LayerMaterials::set_prestretch_fraction(const double f)
+  {
+    for (PrestretchedMaterial *law : prestretched)
+      law->set_fraction(f);
   }
 
 

@@ -11,6 +11,7 @@
 
 #include <ssc/materials/material.h>
 #include <ssc/materials/material_registry.h>
+#include <ssc/materials/prestretched_material.h>
 #include <ssc/mesh/layer_stack.h>
 
 namespace ssc
@@ -77,7 +78,7 @@ namespace ssc
   /// The law of @p layer (its "Material model", E and nu) with the
   /// parameters @p laws holds for it: the one place that turns a layer's
   /// parameters into a Material.
-  std::unique_ptr<const Material>
+  std::unique_ptr<Material>
   make_material(const Layer &layer, const LayerLawParameters &laws = {});
 
   /**
@@ -107,8 +108,22 @@ namespace ssc
     bool
     any_finite_strain() const;
 
+    /// Whether some layer is pre-tensioned (Layer stack/<layer>/Prestretch).
+    bool
+    any_prestretch() const
+    {
+      return !prestretched.empty();
+    }
+
+    /// Sets the pre-tensioned layers to the fraction @p f of their
+    /// prestretch (PrestretchedMaterial::set_fraction()).
+    void
+    set_prestretch_fraction(const double f);
+
   private:
     std::vector<std::unique_ptr<const Material>> materials;
+    /// The pre-tensioned ones among them, which the load can ramp.
+    std::vector<PrestretchedMaterial *> prestretched;
   };
 } // namespace ssc
 

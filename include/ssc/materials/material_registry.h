@@ -85,8 +85,8 @@ namespace ssc
     using ParameterFactory =
       std::function<std::unique_ptr<MaterialParameters>()>;
     using LawFactory = std::function<
-      std::unique_ptr<const Material>(const IsotropicModuli    &moduli,
-                                      const MaterialParameters &parameters)>;
+      std::unique_ptr<Material>(const IsotropicModuli    &moduli,
+                                const MaterialParameters &parameters)>;
 
     struct Entry
     {
@@ -140,8 +140,8 @@ namespace ssc
       {name,
        description,
        []() { return std::make_unique<LawParameters>(); },
-       [](const IsotropicModuli &moduli, const MaterialParameters &parameters)
-         -> std::unique_ptr<const Material> {
+       [](const IsotropicModuli    &moduli,
+          const MaterialParameters &parameters) -> std::unique_ptr<Material> {
          return std::make_unique<Law>(
            moduli, dynamic_cast<const LawParameters &>(parameters));
        }});

@@ -26,6 +26,9 @@ namespace ssc
    * that order, without the iterative update of FEBio's prestrain plugin).
    * Finite-strain laws only: the small-strain kernel would assemble the
    * tangent at F = I and miss the pre-stress.
+   *
+   * A scene that has to reach the pre-tension gradually (a cut skin, whose
+   * wound opens as the tension comes on) ramps it with set_fraction().
    */
   class PrestretchedMaterial : public Material
   {
@@ -87,8 +90,14 @@ namespace ssc
       return F_p;
     }
 
+    /// The prestretch 1 + f (s - 1) instead of s: f = 0 is the stress-free
+    /// layer, f = 1 the full pre-tension. Not during an assembly.
+    void
+    set_fraction(const double f);
+
   private:
     std::unique_ptr<const Material> inner;
+    const double                    full_prestretch;
     Tensor<2, 3>                    F_p;
   };
 } // namespace ssc

@@ -83,6 +83,14 @@ namespace ssc
       return layer_materials;
     }
 
+    /// The pre-tension as a load: the pre-tensioned layers at the fraction
+    /// @p f of their prestretch (LayerMaterials::set_prestretch_fraction()).
+    void
+    set_prestretch_fraction(const double f)
+    {
+      layer_materials.set_prestretch_fraction(f);
+    }
+
     /// Adds @p contribution (e.g. embedded septa) to every cell assembly
     /// from now on; it must outlive this object.
     void
