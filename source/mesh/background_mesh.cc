@@ -56,11 +56,13 @@ namespace ssc
                                  const MeshParameters &parameters,
                                  const MPI_Comm        mpi_communicator,
                                  const ResourceLimits &limits,
-                                 const bool            multigrid_levels)
+                                 const bool            multigrid_levels,
+                                 const Incision       &incision)
     : layers(layers)
     , parameters(parameters)
     , limits(limits)
     , multigrid_levels(multigrid_levels)
+    , incision(incision)
     // multigrid needs the level difference limited at vertices; the other
     // meshes keep deal.II's default smoothing (copy_triangulation() in
     // build() takes the coarse mesh's, which is this one)
@@ -256,6 +258,15 @@ namespace ssc
       cell->set_material_id(std::min<unsigned int>(
         n_layers - 1,
         static_cast<unsigned int>(std::floor(-cell->center()[2]))));
+    if (!incision.empty())
+      {
+        AssertThrow(parameters.layout == MeshLayout::box &&
+                      parameters.fitted_circle_radius == 0,
+                    ExcMessage("An incision needs Mesh/Layout = box without "
+                               "a Fitted circle radius: it is cut along the "
+                               "box's straight mesh lines."));
+        cut_coarse_mesh(coarse, incision, n_layers, "Incision/Length");
+      }
 
     // the o-grid's lateral coordinates are physical already
     const LayerManifold layer_map(layers,

@@ -9,17 +9,19 @@
 #include <vector>
 
 #include <ssc/base/resource_limits.h>
+#include <ssc/mesh/incision.h>
 #include <ssc/mesh/layer_manifold.h>
 #include <ssc/mesh/layer_stack.h>
 #include <ssc/mesh/mesh_parameters.h>
 
 namespace ssc
 {
-  /// Boundary ids of the patch (deal.II's colorized box numbering).
+  /// Boundary ids of the patch (deal.II's colorized box numbering), and
+  /// the two faces of an incision (see Incision).
   namespace BoundaryId
   {
     constexpr types::boundary_id x_min = 0, x_max = 1, y_min = 2, y_max = 3,
-                                 bottom = 4, top = 5;
+                                 bottom = 4, top = 5, cut = 6;
   } // namespace BoundaryId
 
   /**
@@ -36,12 +38,14 @@ namespace ssc
     /// refinement levels on every rank (the geometric multigrid
     /// preconditioner needs them; they cost level ghost cells and change
     /// the partition's constraints, so only then), and the coarse cells are
-    /// numbered column by column (see order_columns()).
+    /// numbered column by column (see order_columns()). A non-empty
+    /// @p incision splits the mesh along it (box layout only).
     BackgroundMesh(const LayerStack     &layers,
                    const MeshParameters &parameters,
                    const MPI_Comm        mpi_communicator,
                    const ResourceLimits &limits           = ResourceLimits(),
-                   const bool            multigrid_levels = false);
+                   const bool            multigrid_levels = false,
+                   const Incision       &incision         = Incision());
 
     /// Builds the coarse mesh and applies global and local refinement;
     /// throws, naming the parameter, if a layer's thickness is out of
@@ -145,6 +149,7 @@ namespace ssc
     const MeshParameters                   &parameters;
     const ResourceLimits                    limits;
     const bool                              multigrid_levels;
+    const Incision                          incision;
     parallel::distributed::Triangulation<3> tria;
   };
 } // namespace ssc

@@ -1,0 +1,141 @@
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <ssc/mesh/background_mesh.h>
+#include <ssc/mesh/incision.h>
+
+namespace ssc
+{
+  namespace
+  {
+    /// The coordinate @p d of the vertex of @p vertices nearest to @p value.
+    double
+    nearest_vertex_coordinate(const std::vector<Point<3>> &vertices,
+                              const unsigned int           d,
+                              const double                 value)
+    {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Point<3> &p : vertices)
+        if (std::abs(p[d] - value) < std::abs(nearest - value))
+          nearest = p[d];
+      return nearest;
+    }
+  } // namespace
+
+
+  void
+  cut_coarse_mesh(Triangulation<3>  &coarse,
+                  const Incision    &incision,
+                  const unsigned int n_layers,
+                  const std::string &parameter)
+  {
+    if (incision.empty())
+      return;
+    AssertThrow(incision.direction < 2,
+                ExcMessage(parameter + ": the cut runs along x or y."));
+    AssertThrow(incision.n_cut_layers >= 1 && incision.n_cut_layers <= n_layers,
+                ExcMessage(parameter + ": the cut goes through 1 to " +
+                           std::to_string(n_layers) + " layers."));
+    auto [vertices, cells, faces] =
+      GridTools::get_coarse_mesh_description(coarse);
+    const unsigned int along  = incision.direction,
+                       across = incision.normal_direction();
+    const double half         = incision.length / 2;
+    const double tolerance    = 1e-6 * GridTools::minimal_cell_diameter(coarse);
+
+    // the patch's extent, for the checks and the boundary ids
+    Point<3> lower = vertices.front(), upper = vertices.front();
+    for (const Point<3> &p : vertices)
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          lower[d] = std::min(lower[d], p[d]);
+          upper[d] = std::max(upper[d], p[d]);
+        }
+    const char *names[2] = {"x", "y"};
+    {
+      std::ostringstream message;
+      message << parameter << " = " << incision.length << " mm: the cut along "
+              << names[along] << " runs from " << -half << " to " << half
+              << " mm, ";
+      AssertThrow(-half > lower[along] + tolerance &&
+                    half < upper[along] - tolerance,
+                  ExcMessage(message.str() + "beyond the patch (" +
+                             std::to_string(lower[along]) + " to " +
+                             std::to_string(upper[along]) +
+                             " mm): shorten it or widen the patch."));
+      AssertThrow(lower[across] < -tolerance && upper[across] > tolerance,
+                  ExcMessage(message.str() +
+                             "but the patch does not extend to both sides "
+                             "of it (a quarter model cannot be cut)."));
+      for (const double end : {-half, half, 0.})
+        {
+          const unsigned int d = end == 0. ? across : along;
+          const double nearest = nearest_vertex_coordinate(vertices, d, end);
+          std::ostringstream off_line;
+          off_line << message.str() << "but the mesh has no vertex plane "
+                   << names[d] << " = " << end << " (nearest: " << nearest
+                   << " mm): the cut runs along mesh lines, through the "
+                      "patch centre, and ends on them. Choose a length "
+                      "that is an even multiple of the core's cells "
+                      "(Mesh/Cell size), or an even number of core cells.";
+          AssertThrow(std::abs(nearest - end) < tolerance,
+                      ExcMessage(off_line.str()));
+        }
+    }
+
+    // the cut's surface: across = 0, |along| < half, z above the floor of
+    // the cut layers (its front, the ends and the floor, stays shared; a
+    // cut through every layer has no floor)
+    const double floor   = -static_cast<double>(incision.n_cut_layers);
+    const bool   through = incision.n_cut_layers == n_layers;
+    std::vector<unsigned int> copy(vertices.size(),
+                                   numbers::invalid_unsigned_int);
+    const unsigned int n_vertices = vertices.size();
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      {
+        const Point<3> p = vertices[v];
+        if (std::abs(p[across]) < tolerance &&
+            std::abs(p[along]) < half - tolerance &&
+            (through || p[2] > floor + tolerance))
+          {
+            copy[v] = vertices.size();
+            vertices.push_back(p);
+          }
+      }
+    for (CellData<3> &cell : cells)
+      {
+        double centre = 0;
+        for (const unsigned int v : cell.vertices)
+          centre += vertices[v][across] / cell.vertices.size();
+        if (centre > 0)
+          for (unsigned int &v : cell.vertices)
+            if (copy[v] != numbers::invalid_unsigned_int)
+              v = copy[v];
+      }
+
+    const auto smoothing = coarse.get_mesh_smoothing();
+    coarse.clear();
+    coarse.set_mesh_smoothing(smoothing);
+    coarse.create_triangulation(vertices, cells, SubCellData());
+
+    // the box's colorized ids by position; what is left is the cut
+    for (const auto &face : coarse.active_face_iterators())
+      if (face->at_boundary())
+        {
+          const Point<3>     c  = face->center();
+          types::boundary_id id = BoundaryId::cut;
+          for (unsigned int d = 0; d < 3; ++d)
+            if (std::abs(c[d] - lower[d]) < tolerance)
+              id = 2 * d;
+            else if (std::abs(c[d] - upper[d]) < tolerance)
+              id = 2 * d + 1;
+          face->set_boundary_id(id);
+        }
+  }
+} // namespace ssc
