@@ -147,6 +147,16 @@ case "${1:-run}" in
       /usr/bin/python3 "$ROOT/scripts/plot_indentation.py" \
         "$ROOT/output/forearm_indentation"
     fi
+    # the incision scenes' pictures (wound outlines, skin stress); their
+    # Run/Name is the file's name
+    case "$prm" in
+      *incision*.prm)
+        folder="$ROOT/output/$(basename "$prm" .prm)"
+        if [ -f "$folder/wound_lips.csv" ]; then
+          /usr/bin/python3 "$ROOT/scripts/plot_incision.py" "$folder"
+        fi
+        ;;
+    esac
     ;;
   test)
     build

@@ -10,6 +10,7 @@
 #include <ssc/identification/identification_scene.h>
 #include <ssc/scenes/geometry_scene.h>
 #include <ssc/scenes/growth_scene.h>
+#include <ssc/scenes/incision_scene.h>
 #include <ssc/scenes/indentation_scene.h>
 #include <ssc/scenes/parameters.h>
 
@@ -151,6 +152,9 @@ namespace ssc
                 break;
               case SceneKind::identification:
                 IdentificationScene(parameters, mpi_communicator).run();
+                break;
+              case SceneKind::incision:
+                IncisionScene(parameters, mpi_communicator).run();
                 break;
             }
           return 0;

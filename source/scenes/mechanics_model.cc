@@ -3,12 +3,15 @@
 
 namespace ssc
 {
-  MechanicsModel::MechanicsModel(const Parameters &parameters, SceneRun &scene)
+  MechanicsModel::MechanicsModel(const Parameters &parameters,
+                                 SceneRun         &scene,
+                                 const Incision   &incision)
     : MechanicsModel(parameters,
                      scene.communicator(),
                      scene.timer(),
                      scene.pcout(),
-                     scene.timed_pcout())
+                     scene.timed_pcout(),
+                     incision)
   {}
 
 
@@ -16,7 +19,8 @@ namespace ssc
                                  const MPI_Comm      mpi_communicator,
                                  TimerOutput        &timer,
                                  ConditionalOStream &pcout,
-                                 ConditionalOStream &timed_pcout)
+                                 ConditionalOStream &timed_pcout,
+                                 const Incision     &incision)
   {
     background_mesh = std::make_unique<BackgroundMesh>(
       parameters.layers,
@@ -24,7 +28,8 @@ namespace ssc
       mpi_communicator,
       parameters.limits,
       parameters.elasticity.linear_solver.preconditioner ==
-        DisplacementPreconditioner::gmg);
+        DisplacementPreconditioner::gmg,
+      incision);
     {
       TimerOutput::Scope t(timer, "mesh");
       background_mesh->build();

@@ -142,6 +142,7 @@ namespace ssc
     elasticity.add_parameters(handler);
     punch.add_parameters(handler);
     growth.add_parameters(handler);
+    incision.add_parameters(handler);
     microstructure.add_parameters(handler);
     embedded.add_parameters(handler);
     newton.add_parameters(handler);
@@ -188,6 +189,7 @@ namespace ssc
     elasticity     = ElasticityParameters();
     punch          = PunchParameters();
     growth         = GrowthParameters();
+    incision       = IncisionParameters();
     microstructure = MicrostructureParameters();
     embedded       = EmbeddedParameters();
     newton         = NewtonParameters();
@@ -216,6 +218,7 @@ namespace ssc
     elasticity.check();
     punch.check();
     growth.check();
+    incision.check();
     microstructure.check();
     embedded.check();
     newton.check();
@@ -234,7 +237,38 @@ namespace ssc
       check_punch_fits();
     if (run.scene == SceneKind::identification)
       check_identification(layer_laws);
+    if (run.scene == SceneKind::incision)
+      check_incision(layer_laws);
     check_model_size(*this);
+  }
+
+
+  void
+  Parameters::check_incision(const LayerMaterials &layer_laws) const
+  {
+    const unsigned int deepest =
+      layers.index_of(incision.deepest_layer, "Incision/Deepest layer cut");
+    AssertThrow(deepest + 1 < layers.n_layers(),
+                ExcMessage(
+                  "Incision/Deepest layer cut = " + incision.deepest_layer +
+                  " cuts through every layer, and the patch would "
+                  "fall apart: the cut has to end above the "
+                  "bottom layer."));
+    AssertThrow(mesh.layout == MeshLayout::box &&
+                  mesh.symmetry == MeshSymmetry::none &&
+                  mesh.fitted_circle_radius == 0,
+                ExcMessage("The incision scene cuts along the straight mesh "
+                           "lines of the whole patch: Mesh/Layout = box, "
+                           "Symmetry = none, no Fitted circle radius."));
+    AssertThrow(layer_laws.any_prestretch(),
+                ExcMessage("The incision scene opens the wound with the "
+                           "skin's pre-tension, but no layer has one: set "
+                           "Layer stack/<layer>/Prestretch above 1 (e.g. "
+                           "1.2 in the skin)."));
+    AssertThrow(elasticity.sides != SideCondition::free,
+                ExcMessage("The incision scene needs Elasticity/Sides = "
+                           "roller or fixed: the sides hold the skin's "
+                           "pre-tension."));
   }
 
 

@@ -19,7 +19,11 @@ namespace ssc
                       "volume (section Growth: cellulite, fat injection), "
                       "the skin elevation is measured. geometry: build the "
                       "layered patch and its microstructure (lobules, septa, "
-                      "ligaments) and write them, without mechanics.");
+                      "ligaments) and write them, without mechanics. "
+                      "identification: fit layer moduli to in vivo "
+                      "indentations (section Identification). incision: "
+                      "cut the pre-tensioned skin (section Incision) along "
+                      "x and along y, and measure the wounds that open.");
     prm.add_parameter("Name",
                       name,
                       "Name of the run: results go to <Output directory>/"

@@ -25,8 +25,11 @@ namespace ssc
   class MechanicsModel
   {
   public:
-    /// Builds the model of @p parameters, timed and reported by @p scene.
-    MechanicsModel(const Parameters &parameters, SceneRun &scene);
+    /// Builds the model of @p parameters, timed and reported by @p scene;
+    /// a non-empty @p incision cuts its mesh.
+    MechanicsModel(const Parameters &parameters,
+                   SceneRun         &scene,
+                   const Incision   &incision = Incision());
 
     /// The same on @p mpi_communicator, timed by @p timer, reported on
     /// @p pcout (and on @p timed_pcout what depends on timing): for models
@@ -35,7 +38,8 @@ namespace ssc
                    const MPI_Comm      mpi_communicator,
                    TimerOutput        &timer,
                    ConditionalOStream &pcout,
-                   ConditionalOStream &timed_pcout);
+                   ConditionalOStream &timed_pcout,
+                   const Incision     &incision = Incision());
 
     BackgroundMesh &
     mesh()

@@ -16,6 +16,7 @@
 #include <ssc/nonlinear/newton_parameters.h>
 #include <ssc/scenes/growth_parameters.h>
 #include <ssc/scenes/identification_parameters.h>
+#include <ssc/scenes/incision_parameters.h>
 #include <ssc/scenes/punch_parameters.h>
 #include <ssc/scenes/run_parameters.h>
 
@@ -84,6 +85,7 @@ namespace ssc
     ElasticityParameters     elasticity;
     PunchParameters          punch;
     GrowthParameters         growth;
+    IncisionParameters       incision;
     MicrostructureParameters microstructure;
     EmbeddedParameters       embedded;
     NewtonParameters         newton;
@@ -133,6 +135,11 @@ namespace ssc
     /// The punch inside the patch and the body (indentation).
     void
     check_punch_fits() const;
+
+    /// The cut inside the patch, on its mesh lines, and a pre-tension to
+    /// open it (incision).
+    void
+    check_incision(const LayerMaterials &layer_laws) const;
 
     /// What the identification's forward model needs.
     void

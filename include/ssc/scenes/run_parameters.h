@@ -18,16 +18,18 @@ namespace ssc
     indentation,
     growth,
     geometry,
-    identification
+    identification,
+    incision
   };
 
-  constexpr std::array<std::pair<SceneKind, const char *>, 4>
+  constexpr std::array<std::pair<SceneKind, const char *>, 5>
   enum_table(SceneKind)
   {
     return {{{SceneKind::indentation, "indentation"},
              {SceneKind::growth, "growth"},
              {SceneKind::geometry, "geometry"},
-             {SceneKind::identification, "identification"}}};
+             {SceneKind::identification, "identification"},
+             {SceneKind::incision, "incision"}}};
   }
 
   /// Section "Run": which scene, where its results go.

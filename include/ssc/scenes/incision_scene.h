@@ -1,0 +1,38 @@
+#ifndef ssc_scenes_incision_scene_h
+#define ssc_scenes_incision_scene_h
+
+#include <vector>
+
+#include <ssc/scenes/scene.h>
+#include <ssc/scenes/wound.h>
+
+namespace ssc
+{
+  /**
+   * An incision of the pre-tensioned skin (section "Incision"): a straight
+   * cut through the patch centre, down through the top layers, made once
+   * along x and once along y on otherwise identical models. The skin's
+   * pre-tension (Layer stack/<layer>/Prestretch, held by the patch's
+   * sides) comes on in load steps with the cut already made, which for an
+   * elastic body is the same end state as cutting the tensed skin; the
+   * wound it opens is measured after each step (WoundShape). Where the
+   * skin's law has Langer's lines (Gasser-Ogden-Holzapfel), each cut is
+   * named along or across them, and the ratio of their gaps is reported.
+   *
+   * Writes into output/<run name>/: summary.json (key "wound"), wound.csv
+   * (per cut and step), wound_lips.csv (the lips' outlines at full
+   * pre-tension), volume.pvd (the two cut models at full pre-tension, steps
+   * 1 and 2), parameters.prm, log.txt.
+   */
+  class IncisionScene : public Scene
+  {
+  public:
+    using Scene::Scene;
+
+    /// The wounds of the cuts along x and along y at full pre-tension.
+    std::vector<WoundShape>
+    run();
+  };
+} // namespace ssc
+
+#endif

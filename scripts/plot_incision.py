@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+"""Pictures of an incision run (Run/Scene = incision): for each of the two
+cuts, the skin surface around the wound at full pre-tension, coloured by
+the skin's stress across the cut (the tension the cut released: low at the
+lips, raised at the cut's ends), the planned cut (dashed) and the opened
+lips; below, the gap against the pre-tension as it comes on.
+
+    /usr/bin/python3 scripts/plot_incision.py RUN_DIR [HALF_WIDTH_MM]
+
+writes RUN_DIR/incision.png.
+"""
+import glob, json, os, sys
+
+import numpy as np
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+from matplotlib.collections import PolyCollection
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import run_manifest  # noqa: E402 (scripts/)
+import vtu  # noqa: E402
+
+
+def skin_surface(folder, step):
+    """Top faces of the skin's top cells, deformed, and their stresses."""
+    faces, values = [], {"stress_xx": [], "stress_yy": []}
+    # one file per rank
+    for piece in sorted(glob.glob(os.path.join(folder,
+                                               f"volume_{step:04d}.*.vtu"))):
+        mesh = vtu.read(piece)
+        points = mesh["points"] + mesh["point_data"]["displacement"]
+        reference = mesh["points"]
+        layer = vtu.cell_values(mesh, "layer").round().astype(int)
+        for k, cell in enumerate(vtu.cells(mesh)):
+            if layer[k] != 0 or len(cell) != 8:
+                continue
+            top = cell[4:]  # VTK hexahedron: bottom face, then top face
+            if reference[top, 2].min() < -1e-9:
+                continue
+            faces.append(points[top, :2])
+            for name in values:
+                values[name].append(vtu.cell_values(mesh, name)[k])
+    return faces, {n: np.array(v) for n, v in values.items()}
+
+
+def main():
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    folder = sys.argv[1]
+    with open(os.path.join(folder, "summary.json")) as f:
+        summary = json.load(f)
+    wound = summary["wound"]
+    lips = np.genfromtxt(os.path.join(folder, "wound_lips.csv"),
+                         delimiter=",", names=True, dtype=None,
+                         encoding="utf-8")
+    table = np.genfromtxt(os.path.join(folder, "wound.csv"), delimiter=",",
+                          names=True, dtype=None, encoding="utf-8")
+    length = wound["cut_along_x"]["planned_length_mm"]
+    half = float(sys.argv[2]) if len(sys.argv) > 2 else 1.2 * length
+
+    fig = plt.figure(figsize=(10, 8.4), constrained_layout=True)
+    grid = fig.add_gridspec(2, 2, height_ratios=[3, 1.3])
+    maps = []
+    for step, name in ((1, "x"), (2, "y")):
+        ax = fig.add_subplot(grid[0, step - 1])
+        entry = wound[f"cut_along_{name}"]
+        faces, stress = skin_surface(folder, step)
+        across = stress["stress_yy" if name == "x" else "stress_xx"] * 1e3
+        if faces:
+            collection = PolyCollection(faces, array=across, cmap="viridis",
+                                        edgecolors="face", linewidths=0.2)
+            maps.append(collection)
+            ax.add_collection(collection)
+            fig.colorbar(collection, ax=ax, shrink=0.8,
+                         label="skin stress across the cut (kPa)")
+        plan = np.array([[-length / 2, 0], [length / 2, 0]])
+        if name == "y":
+            plan = plan[:, ::-1]
+        ax.plot(plan[:, 0], plan[:, 1], "k--", lw=1, label="planned cut")
+        for side in (-1, 1):
+            mine = lips[(lips["cut"] == name) & (lips["side"] == side)]
+            ax.plot(mine["x"], mine["y"], "r-", lw=1.5,
+                    label="lips" if side == 1 else None)
+        where = entry.get("relative_to_langer_lines")
+        ax.set_title(
+            f"cut along {name}" + (f" ({where} Langer's lines)" if where
+                                   else "") +
+            f"\ngap {entry['gap_mm']:.3g} mm, area {entry['area_mm2']:.3g} "
+            f"mm$^2$, length/gap {entry['aspect_ratio']:.3g}", fontsize=9)
+        ax.set_xlim(-half, half)
+        ax.set_ylim(-half, half)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (mm)")
+        ax.set_ylabel("y (mm)")
+        ax.legend(loc="lower right", fontsize=8)
+    ax = fig.add_subplot(grid[1, :])
+    for name, marker in (("x", "o-"), ("y", "s--")):
+        rows = table[table["cut"] == name]
+        ax.plot(100 * rows["prestretch_fraction"], rows["gap_mm"], marker,
+                label=f"cut along {name}")
+    tension = wound["skin_tension_N_per_m"]
+    ax.set_xlabel("pre-tension applied (% of the prestretch; full: "
+                  f"{tension['x']:.3g} / {tension['y']:.3g} N/m along x / y)")
+    ax.set_ylabel("gap (mm)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.suptitle(f"{summary['run']}: incision of the pre-tensioned skin")
+    fig.savefig(run_manifest.record(folder, "incision.png"), dpi=130)
+
+
+if __name__ == "__main__":
+    main()
