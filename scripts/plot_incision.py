@@ -3,7 +3,9 @@
 cuts, the skin surface around the wound at full pre-tension, coloured by
 the skin's stress across the cut (the tension the cut released: low at the
 lips, raised at the cut's ends), the planned cut (dashed) and the opened
-lips; below, the gap against the pre-tension as it comes on.
+lips; below, the gap against the pre-tension as it comes on. For an
+excision (Incision/Shape = disc) one panel: the von Mises stress, the
+planned disc and the wound's rim; below, the wound's area change.
 
     /usr/bin/python3 scripts/plot_incision.py RUN_DIR [HALF_WIDTH_MM]
 
@@ -24,7 +26,7 @@ import vtu  # noqa: E402
 
 def skin_surface(folder, step):
     """Top faces of the skin's top cells, deformed, and their stresses."""
-    faces, values = [], {"stress_xx": [], "stress_yy": []}
+    faces, values = [], {"stress_xx": [], "stress_yy": [], "von_mises": []}
     # one file per rank
     for piece in sorted(glob.glob(os.path.join(folder,
                                                f"volume_{step:04d}.*.vtu"))):
@@ -56,38 +58,64 @@ def main():
                          encoding="utf-8")
     table = np.genfromtxt(os.path.join(folder, "wound.csv"), delimiter=",",
                           names=True, dtype=None, encoding="utf-8")
-    length = wound["cut_along_x"]["planned_length_mm"]
+    disc = "excision" in wound or "planned_diameter_mm" in wound
+    if disc:
+        panels = [(1, "disc", wound)]
+        length = wound["planned_diameter_mm"]
+    else:
+        panels = [(1, "x", wound["cut_along_x"]), (2, "y", wound["cut_along_y"])]
+        length = wound["cut_along_x"]["planned_length_mm"]
     half = float(sys.argv[2]) if len(sys.argv) > 2 else 1.2 * length
 
-    fig = plt.figure(figsize=(10, 8.4), constrained_layout=True)
-    grid = fig.add_gridspec(2, 2, height_ratios=[3, 1.3])
-    maps = []
-    for step, name in ((1, "x"), (2, "y")):
+    fig = plt.figure(figsize=(10 if not disc else 6.5, 8.4),
+                     constrained_layout=True)
+    grid = fig.add_gridspec(2, len(panels), height_ratios=[3, 1.3])
+    for step, name, entry in panels:
         ax = fig.add_subplot(grid[0, step - 1])
-        entry = wound[f"cut_along_{name}"]
         faces, stress = skin_surface(folder, step)
-        across = stress["stress_yy" if name == "x" else "stress_xx"] * 1e3
+        if disc:
+            # deviatoric: Q1-P0's mean stress shows its pressure checkerboard
+            shown = stress["von_mises"] * 1e3
+            label = "skin von Mises stress (kPa)"
+        else:
+            shown = stress["stress_yy" if name == "x" else "stress_xx"] * 1e3
+            label = "skin stress across the cut (kPa)"
         if faces:
-            collection = PolyCollection(faces, array=across, cmap="viridis",
+            collection = PolyCollection(faces, array=shown, cmap="viridis",
                                         edgecolors="face", linewidths=0.2)
-            maps.append(collection)
             ax.add_collection(collection)
-            fig.colorbar(collection, ax=ax, shrink=0.8,
-                         label="skin stress across the cut (kPa)")
-        plan = np.array([[-length / 2, 0], [length / 2, 0]])
-        if name == "y":
-            plan = plan[:, ::-1]
-        ax.plot(plan[:, 0], plan[:, 1], "k--", lw=1, label="planned cut")
-        for side in (-1, 1):
-            mine = lips[(lips["cut"] == name) & (lips["side"] == side)]
-            ax.plot(mine["x"], mine["y"], "r-", lw=1.5,
-                    label="lips" if side == 1 else None)
-        where = entry.get("relative_to_langer_lines")
-        ax.set_title(
-            f"cut along {name}" + (f" ({where} Langer's lines)" if where
-                                   else "") +
-            f"\ngap {entry['gap_mm']:.3g} mm, area {entry['area_mm2']:.3g} "
-            f"mm$^2$, length/gap {entry['aspect_ratio']:.3g}", fontsize=9)
+            fig.colorbar(collection, ax=ax, shrink=0.8, label=label)
+        if disc:
+            angle = np.linspace(0, 2 * np.pi, 200)
+            plan = length / 2 * np.stack([np.cos(angle), np.sin(angle)], 1)
+        else:
+            plan = np.array([[-length / 2, 0], [length / 2, 0]])
+            if name == "y":
+                plan = plan[:, ::-1]
+        ax.plot(plan[:, 0], plan[:, 1], "k--", lw=1,
+                label="planned " + ("disc" if disc else "cut"))
+        if disc:
+            rim = lips[lips["cut"] == "disc"]
+            order = np.argsort(rim["t"])
+            ax.plot(np.append(rim["x"][order], rim["x"][order][0]),
+                    np.append(rim["y"][order], rim["y"][order][0]), "r-",
+                    lw=1.5, label="wound")
+            title = (f"excision: area {entry['area_change_pct']:+.3g} %, "
+                     f"aspect ratio {entry['aspect_ratio']:.3g}, long axis "
+                     f"{entry['orientation_deg']:.3g} deg\nfreed disc "
+                     f"{summary['disc']['area_change_pct']:+.3g} %")
+        else:
+            for side in (-1, 1):
+                mine = lips[(lips["cut"] == name) & (lips["side"] == side)]
+                ax.plot(mine["x"], mine["y"], "r-", lw=1.5,
+                        label="lips" if side == 1 else None)
+            where = entry.get("relative_to_langer_lines")
+            title = (f"cut along {name}" +
+                     (f" ({where} Langer's lines)" if where else "") +
+                     f"\ngap {entry['gap_mm']:.3g} mm, area "
+                     f"{entry['area_mm2']:.3g} mm$^2$, length/gap "
+                     f"{entry['aspect_ratio']:.3g}")
+        ax.set_title(title, fontsize=9)
         ax.set_xlim(-half, half)
         ax.set_ylim(-half, half)
         ax.set_aspect("equal")
@@ -95,17 +123,25 @@ def main():
         ax.set_ylabel("y (mm)")
         ax.legend(loc="lower right", fontsize=8)
     ax = fig.add_subplot(grid[1, :])
-    for name, marker in (("x", "o-"), ("y", "s--")):
+    for _, name, _ in panels:
         rows = table[table["cut"] == name]
-        ax.plot(100 * rows["prestretch_fraction"], rows["gap_mm"], marker,
-                label=f"cut along {name}")
+        if disc:
+            planned = wound["planned_area_mm2"]
+            ax.plot(100 * rows["prestretch_fraction"],
+                    100 * (rows["area_mm2"] / planned - 1), "o-",
+                    label="wound")
+        else:
+            ax.plot(100 * rows["prestretch_fraction"], rows["gap_mm"],
+                    "o-" if name == "x" else "s--", label=f"cut along {name}")
     tension = wound["skin_tension_N_per_m"]
     ax.set_xlabel("pre-tension applied (% of the prestretch; full: "
                   f"{tension['x']:.3g} / {tension['y']:.3g} N/m along x / y)")
-    ax.set_ylabel("gap (mm)")
+    ax.set_ylabel("wound area change (%)" if disc else "gap (mm)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    fig.suptitle(f"{summary['run']}: incision of the pre-tensioned skin")
+    fig.suptitle(f"{summary['run']}: "
+                 f"{'excision' if disc else 'incision'} of the pre-tensioned "
+                 "skin")
     fig.savefig(run_manifest.record(folder, "incision.png"), dpi=130)
 
 

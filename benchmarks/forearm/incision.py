@@ -21,10 +21,16 @@ with Cholesky; no fields):
   mm mesh: the cut along x runs across the lines, the cut along y along
   them.
 
+The excision scene (prm/forearm_excision.prm: a disc of 8 mm excised
+through the dermis) on both meshes and with the fibre-reinforced skin:
+the wound's area change, aspect ratio and orientation
+(results/excision.csv).
+
 Writes benchmarks/forearm/results/incision.csv (one row per run) and
 incision.png (gap against the skin tension; the variants' gaps).
 
-    /usr/bin/python3 benchmarks/forearm/incision.py [--plot-only]
+    /usr/bin/python3 benchmarks/forearm/incision.py [--plot-only |
+                                                     --excision-only]
 """
 import csv, os, sys
 
@@ -56,17 +62,55 @@ VARIANTS = [
 ]
 
 
+EXCISION = os.path.join(ROOT, "prm", "forearm_excision.prm")
+EXCISION_CSV = os.path.join(HERE, "results", "excision.csv")
+EXCISION_VARIANTS = [
+    ("isotropic, s 1.2 (scene)", 1, []),
+    ("isotropic, s 1.2 (scene)", 0, []),
+    ("fibres, s 1.00002", 0, FIBRES),
+]
+
+
+def run_variant(prm, label, refinements, overrides):
+    """One run of prm with the overrides on the mesh with refinements:
+    its summary and wall time (stops the script if it fails)."""
+    settings = COMMON + overrides + [f"Mesh/Global refinements={refinements}"]
+    with ssc_runner.scratch() as tmp:
+        result = ssc_runner.run(prm, settings, tmp, "run", ranks=None,
+                                timeout=3600)
+        if not result.ok:
+            sys.exit(f"{label}: failed: {result.stderr[-500:]}")
+        return result.summary(), round(result.wall_s, 1)
+
+
+def measure_excision():
+    rows = []
+    for label, refinements, overrides in EXCISION_VARIANTS:
+        s, wall = run_variant(EXCISION, label, refinements, overrides)
+        wound = s["wound"]
+        rows.append({
+            "variant": label,
+            "refinements": refinements,
+            "dofs": s["dofs"],
+            "skin_tension_x_N_per_m": wound["skin_tension_N_per_m"]["x"],
+            "skin_tension_y_N_per_m": wound["skin_tension_N_per_m"]["y"],
+            "wound_area_change_pct": wound["area_change_pct"],
+            "wound_aspect_ratio": wound["aspect_ratio"],
+            "wound_orientation_deg": wound["orientation_deg"],
+            "wound_long_axis_mm": wound["length_mm"],
+            "wound_short_axis_mm": wound["gap_mm"],
+            "disc_area_change_pct": s["disc"]["area_change_pct"],
+            "newton_iterations": s["solver"]["newton_iterations"],
+            "wall_s": wall,
+        })
+        print(rows[-1])
+    ssc_runner.write_rows(EXCISION_CSV, rows)
+
+
 def measure():
     rows = []
     for label, refinements, overrides in VARIANTS:
-        settings = COMMON + overrides + [
-            f"Mesh/Global refinements={refinements}"]
-        with ssc_runner.scratch() as tmp:
-            result = ssc_runner.run(SCENE, settings, tmp, "run", ranks=None,
-                                    timeout=3600)
-            if not result.ok:
-                sys.exit(f"{label}: failed: {result.stderr[-500:]}")
-            s = result.summary()
+        s, wall = run_variant(SCENE, label, refinements, overrides)
         wound = s["wound"]
         x, y = wound["cut_along_x"], wound["cut_along_y"]
         rows.append({
@@ -83,7 +127,7 @@ def measure():
             "aspect_cut_y": y["aspect_ratio"],
             "cut_x_relative_to_lines": x["relative_to_langer_lines"] or "",
             "newton_iterations": s["solver"]["newton_iterations"],
-            "wall_s": round(result.wall_s, 1),
+            "wall_s": wall,
         })
         print(rows[-1])
     ssc_runner.write_rows(CSV, rows)
@@ -130,6 +174,9 @@ def plot():
 
 
 if __name__ == "__main__":
-    if "--plot-only" not in sys.argv:
+    if "--excision-only" in sys.argv:
+        measure_excision()
+    elif "--plot-only" not in sys.argv:
         measure()
+        measure_excision()
     plot()

@@ -260,11 +260,18 @@ namespace ssc
         static_cast<unsigned int>(std::floor(-cell->center()[2]))));
     if (!incision.empty())
       {
+        const bool disc = incision.shape == Incision::Shape::disc;
         AssertThrow(parameters.layout == MeshLayout::box &&
-                      parameters.fitted_circle_radius == 0,
-                    ExcMessage("An incision needs Mesh/Layout = box without "
-                               "a Fitted circle radius: it is cut along the "
-                               "box's straight mesh lines."));
+                      std::abs(parameters.fitted_circle_radius -
+                               (disc ? incision.length / 2 : 0.)) <=
+                        1e-12 * incision.length,
+                    ExcMessage(disc ?
+                                 "An excision needs Mesh/Layout = box with a "
+                                 "Fitted circle radius of half the disc's "
+                                 "diameter: the mesh lines follow its edge." :
+                                 "An incision needs Mesh/Layout = box without "
+                                 "a Fitted circle radius: it is cut along the "
+                                 "box's straight mesh lines."));
         cut_coarse_mesh(coarse, incision, n_layers, "Incision/Length");
       }
 

@@ -1,10 +1,12 @@
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include <ssc/mesh/background_mesh.h>
@@ -25,6 +27,81 @@ namespace ssc
         if (std::abs(p[d] - value) < std::abs(nearest - value))
           nearest = p[d];
       return nearest;
+    }
+
+
+    /// The box's colorized boundary ids by position (@p lower, @p upper
+    /// its corners); every other boundary face is the cut's.
+    void
+    set_boundary_ids(Triangulation<3> &coarse,
+                     const Point<3>   &lower,
+                     const Point<3>   &upper,
+                     const double      tolerance)
+    {
+      for (const auto &face : coarse.active_face_iterators())
+        if (face->at_boundary())
+          {
+            const Point<3>     c  = face->center();
+            types::boundary_id id = BoundaryId::cut;
+            for (unsigned int d = 0; d < 3; ++d)
+              if (std::abs(c[d] - lower[d]) < tolerance)
+                id = 2 * d;
+              else if (std::abs(c[d] - upper[d]) < tolerance)
+                id = 2 * d + 1;
+            face->set_boundary_id(id);
+          }
+    }
+
+
+    /// Throws, naming @p message, unless @p value is a vertex plane of
+    /// @p vertices across direction @p d.
+    void
+    check_vertex_plane(const std::vector<Point<3>> &vertices,
+                       const unsigned int           d,
+                       const double                 value,
+                       const double                 tolerance,
+                       const std::string           &message)
+    {
+      const char  *names[3] = {"x", "y", "z"};
+      const double nearest  = nearest_vertex_coordinate(vertices, d, value);
+      std::ostringstream off_line;
+      off_line << message << "but the mesh has no vertex plane " << names[d]
+               << " = " << value << " (nearest: " << nearest
+               << " mm): the cut runs along mesh lines, through the "
+                  "patch centre, and ends on them. Choose a length "
+                  "that is an even multiple of the core's cells "
+                  "(Mesh/Cell size), or an even number of core cells.";
+      AssertThrow(std::abs(nearest - value) < tolerance,
+                  ExcMessage(off_line.str()));
+    }
+
+
+    /// The excision: the cells of the cut layers inside the square
+    /// |x|, |y| < @p half removed.
+    void
+    remove_disc(Triangulation<3>  &coarse,
+                const double       half,
+                const double       floor,
+                const double       tolerance,
+                const std::string &message)
+    {
+      const std::vector<Point<3>> &vertices = coarse.get_vertices();
+      for (const unsigned int d : {0u, 1u})
+        for (const double side : {-half, half})
+          check_vertex_plane(vertices, d, side, tolerance, message);
+      std::set<Triangulation<3>::active_cell_iterator> removed;
+      for (const auto &cell : coarse.active_cell_iterators())
+        {
+          const Point<3> c = cell->center();
+          if (std::abs(c[0]) < half && std::abs(c[1]) < half && c[2] > floor)
+            removed.insert(cell);
+        }
+      Triangulation<3> remaining(coarse.get_mesh_smoothing());
+      GridGenerator::create_triangulation_with_removed_cells(coarse,
+                                                             removed,
+                                                             remaining);
+      coarse.clear();
+      coarse.copy_triangulation(remaining);
     }
   } // namespace
 
@@ -57,46 +134,48 @@ namespace ssc
           lower[d] = std::min(lower[d], p[d]);
           upper[d] = std::max(upper[d], p[d]);
         }
-    const char *names[2] = {"x", "y"};
-    {
-      std::ostringstream message;
-      message << parameter << " = " << incision.length << " mm: the cut along "
-              << names[along] << " runs from " << -half << " to " << half
-              << " mm, ";
-      AssertThrow(-half > lower[along] + tolerance &&
-                    half < upper[along] - tolerance,
-                  ExcMessage(message.str() + "beyond the patch (" +
-                             std::to_string(lower[along]) + " to " +
-                             std::to_string(upper[along]) +
-                             " mm): shorten it or widen the patch."));
-      AssertThrow(lower[across] < -tolerance && upper[across] > tolerance,
-                  ExcMessage(message.str() +
-                             "but the patch does not extend to both sides "
-                             "of it (a quarter model cannot be cut)."));
-      for (const double end : {-half, half, 0.})
-        {
-          const unsigned int d = end == 0. ? across : along;
-          const double nearest = nearest_vertex_coordinate(vertices, d, end);
-          std::ostringstream off_line;
-          off_line << message.str() << "but the mesh has no vertex plane "
-                   << names[d] << " = " << end << " (nearest: " << nearest
-                   << " mm): the cut runs along mesh lines, through the "
-                      "patch centre, and ends on them. Choose a length "
-                      "that is an even multiple of the core's cells "
-                      "(Mesh/Cell size), or an even number of core cells.";
-          AssertThrow(std::abs(nearest - end) < tolerance,
-                      ExcMessage(off_line.str()));
-        }
-    }
+    const char        *names[2] = {"x", "y"};
+    const double       floor    = -static_cast<double>(incision.n_cut_layers);
+    std::ostringstream message;
+    if (incision.shape == Incision::Shape::disc)
+      {
+        message << parameter << " = " << incision.length
+                << " mm: the disc reaches " << half << " mm from the centre, ";
+        for (const unsigned int d : {0u, 1u})
+          AssertThrow(-half > lower[d] + tolerance &&
+                        half < upper[d] - tolerance,
+                      ExcMessage(message.str() +
+                                 "beyond the patch: make it smaller or "
+                                 "widen the patch."));
+        remove_disc(coarse, half, floor, tolerance, message.str());
+        set_boundary_ids(coarse, lower, upper, tolerance);
+        return;
+      }
+
+    message << parameter << " = " << incision.length << " mm: the cut along "
+            << names[along] << " runs from " << -half << " to " << half
+            << " mm, ";
+    AssertThrow(-half > lower[along] + tolerance &&
+                  half < upper[along] - tolerance,
+                ExcMessage(message.str() + "beyond the patch (" +
+                           std::to_string(lower[along]) + " to " +
+                           std::to_string(upper[along]) +
+                           " mm): shorten it or widen the patch."));
+    AssertThrow(lower[across] < -tolerance && upper[across] > tolerance,
+                ExcMessage(message.str() +
+                           "but the patch does not extend to both sides "
+                           "of it (a quarter model cannot be cut)."));
+    check_vertex_plane(vertices, along, -half, tolerance, message.str());
+    check_vertex_plane(vertices, along, half, tolerance, message.str());
+    check_vertex_plane(vertices, across, 0., tolerance, message.str());
 
     // the cut's surface: across = 0, |along| < half, z above the floor of
     // the cut layers (its front, the ends and the floor, stays shared; a
     // cut through every layer has no floor)
-    const double floor   = -static_cast<double>(incision.n_cut_layers);
-    const bool   through = incision.n_cut_layers == n_layers;
+    const bool                through = incision.n_cut_layers == n_layers;
     std::vector<unsigned int> copy(vertices.size(),
                                    numbers::invalid_unsigned_int);
-    const unsigned int n_vertices = vertices.size();
+    const unsigned int        n_vertices = vertices.size();
     for (unsigned int v = 0; v < n_vertices; ++v)
       {
         const Point<3> p = vertices[v];
@@ -123,19 +202,6 @@ namespace ssc
     coarse.clear();
     coarse.set_mesh_smoothing(smoothing);
     coarse.create_triangulation(vertices, cells, SubCellData());
-
-    // the box's colorized ids by position; what is left is the cut
-    for (const auto &face : coarse.active_face_iterators())
-      if (face->at_boundary())
-        {
-          const Point<3>     c  = face->center();
-          types::boundary_id id = BoundaryId::cut;
-          for (unsigned int d = 0; d < 3; ++d)
-            if (std::abs(c[d] - lower[d]) < tolerance)
-              id = 2 * d;
-            else if (std::abs(c[d] - upper[d]) < tolerance)
-              id = 2 * d + 1;
-          face->set_boundary_id(id);
-        }
+    set_boundary_ids(coarse, lower, upper, tolerance);
   }
 } // namespace ssc

@@ -9,11 +9,20 @@ namespace ssc
   {
     prm.enter_subsection("Incision");
     prm.add_parameter(
+      "Shape",
+      shape,
+      "line: an incision, a straight cut through the patch centre, made "
+      "once along x and once along y (two models); disc: an excision, the "
+      "cut layers removed inside a disc at the patch centre (one model; "
+      "Mesh/Fitted circle radius must be its radius, so that the mesh "
+      "lines follow its edge).");
+    prm.add_parameter(
       "Length",
       length,
-      "Length of the straight cut through the patch centre, mm. It runs "
-      "along mesh lines (Mesh/Layout = box): its ends must be vertex "
-      "planes of the mesh, e.g. an even multiple of the core's Cell size.",
+      "Length of the line, or the disc's diameter, mm. Either runs along "
+      "mesh lines (Mesh/Layout = box): a line's ends and the square the "
+      "disc is mapped from must be vertex planes of the mesh, e.g. an even "
+      "multiple of the core's Cell size.",
       Patterns::Double(0));
     prm.add_parameter("Deepest layer cut",
                       deepest_layer,
@@ -45,6 +54,7 @@ namespace ssc
                                const unsigned int direction) const
   {
     Incision cut;
+    cut.shape     = shape;
     cut.length    = length;
     cut.direction = direction;
     cut.n_cut_layers =

@@ -106,14 +106,21 @@ namespace ssc
     types::global_cell_index cells = 0;
     table << "cut,step,prestretch_fraction,gap_mm,area_mm2,length_mm,"
              "aspect_ratio,orientation_deg\n";
-    for (const unsigned int direction : {0u, 1u})
+    const bool disc = parameters.incision.shape == Incision::Shape::disc;
+    for (unsigned int direction = 0; direction < (disc ? 1u : 2u); ++direction)
       {
         const Incision incision =
           parameters.incision.incision(parameters.layers, direction);
-        const std::string name  = direction == 0 ? "x" : "y";
-        const std::string where = relative_to_lines(90. * direction, langer);
-        scene.pcout() << "Incision along " << name << " (" << incision.length
-                      << " mm through " << incision.n_cut_layers << " layer(s)"
+        const std::string name = disc ? "disc" : direction == 0 ? "x" : "y";
+        const std::string where =
+          disc ? "" : relative_to_lines(90. * direction, langer);
+        if (disc)
+          scene.pcout() << "Excision of a disc (" << incision.length
+                        << " mm across";
+        else
+          scene.pcout() << "Incision along " << name << " (" << incision.length
+                        << " mm";
+        scene.pcout() << " through " << incision.n_cut_layers << " layer(s)"
                       << (where.empty() ? "" : ", " + where + " Langer's lines")
                       << ")" << std::endl;
         MechanicsModel model(parameters, scene, incision);
@@ -138,7 +145,11 @@ namespace ssc
             scene.pcout() << "  pre-tension " << std::setprecision(4)
                           << 100 * fractions[k] << " %: gap " << wound.gap_mm
                           << " mm, area " << wound.area_mm2 << " mm^2, length "
-                          << wound.length_mm << " mm" << std::endl;
+                          << wound.length_mm << " mm";
+            if (disc)
+              scene.pcout() << ", area change " << wound.area_change_pct
+                            << " %, aspect ratio " << wound.aspect_ratio;
+            scene.pcout() << std::endl;
             table << name << ',' << k + 1 << ',' << fractions[k] << ','
                   << wound.gap_mm << ',' << wound.area_mm2 << ','
                   << wound.length_mm << ',' << wound.aspect_ratio << ','
@@ -162,8 +173,9 @@ namespace ssc
         entry["relative_to_langer_lines"] = where.empty() ?
                                               nlohmann::ordered_json() :
                                               nlohmann::ordered_json(where);
-        cuts["cut_along_" + name]         = entry;
-        solver["cut_along_" + name]       = driver.summary();
+        const std::string key = disc ? "excision" : "cut_along_" + name;
+        cuts[key]             = entry;
+        solver[key]           = driver.summary();
         tension =
           far_field_skin_tension(system.materials()[0],
                                  parameters.layers.layer(0).thickness(0, 0));
@@ -180,7 +192,7 @@ namespace ssc
       for (const char *key : {"linear_iterations", "newton_iterations"})
         totals[key] =
           totals[key].get<unsigned int>() + record[key].get<unsigned int>();
-    totals["preconditioner"] = solver["cut_along_x"]["preconditioner"];
+    totals["preconditioner"] = solver.begin().value()["preconditioner"];
     totals["per_cut"]        = solver;
     summary["solver"]        = totals;
     nlohmann::ordered_json wound_summary;
@@ -189,15 +201,25 @@ namespace ssc
                                                nlohmann::ordered_json(langer);
     wound_summary["skin_tension_N_per_m"]  = {{"x", tension[0]},
                                               {"y", tension[1]}};
-    wound_summary.update(cuts);
-    if (!std::isnan(langer))
+    if (disc)
+      {
+        wound_summary.update(cuts["excision"]);
+        // the freed disc relaxes to the skin's stress-free state, whatever
+        // its law: its area changes by 1 / s^2 (of the skin alone; a disc
+        // with fat attached would shrink less)
+        const double s  = parameters.layers.layer(0).prestretch;
+        summary["disc"] = {{"area_change_pct", 100. * (1. / (s * s) - 1.)}};
+      }
+    else
+      wound_summary.update(cuts);
+    if (!disc && !std::isnan(langer))
       {
         const unsigned int across =
           relative_to_lines(0., langer) == "across" ? 0 : 1;
         wound_summary["gap_ratio_across_to_along"] =
           wounds[across].gap_mm / wounds[1 - across].gap_mm;
       }
-    else
+    else if (!disc)
       wound_summary["gap_ratio_x_to_y"] = wounds[0].gap_mm / wounds[1].gap_mm;
     summary["wound"] = wound_summary;
     {

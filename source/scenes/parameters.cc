@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -254,12 +255,21 @@ namespace ssc
                   " cuts through every layer, and the patch would "
                   "fall apart: the cut has to end above the "
                   "bottom layer."));
+    const bool disc = incision.shape == Incision::Shape::disc;
     AssertThrow(mesh.layout == MeshLayout::box &&
                   mesh.symmetry == MeshSymmetry::none &&
-                  mesh.fitted_circle_radius == 0,
-                ExcMessage("The incision scene cuts along the straight mesh "
-                           "lines of the whole patch: Mesh/Layout = box, "
-                           "Symmetry = none, no Fitted circle radius."));
+                  std::abs(mesh.fitted_circle_radius -
+                           (disc ? incision.length / 2 : 0.)) <=
+                    1e-12 * incision.length,
+                ExcMessage(disc ? "Incision/Shape = disc removes the disc "
+                                  "whose edge the mesh lines follow: "
+                                  "Mesh/Layout = box, Symmetry = none, "
+                                  "Fitted circle radius = half of "
+                                  "Incision/Length." :
+                                  "The incision scene cuts along the "
+                                  "straight mesh lines of the whole patch: "
+                                  "Mesh/Layout = box, Symmetry = none, no "
+                                  "Fitted circle radius."));
     AssertThrow(layer_laws.any_prestretch(),
                 ExcMessage("The incision scene opens the wound with the "
                            "skin's pre-tension, but no layer has one: set "

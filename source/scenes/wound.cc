@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,16 +15,109 @@ namespace ssc
   nlohmann::ordered_json
   WoundShape::to_json() const
   {
-    return {{"planned_length_mm", planned_length},
-            {"cut_direction_deg", direction == 0 ? 0. : 90.},
-            {"gap_mm", gap_mm},
-            {"area_mm2", area_mm2},
-            // an incision plans no area: its change has no reference
-            {"area_change_pct", nullptr},
-            {"length_mm", length_mm},
-            {"aspect_ratio", aspect_ratio},
-            {"orientation_deg", orientation_deg}};
+    const bool             disc = shape == Incision::Shape::disc;
+    nlohmann::ordered_json json;
+    if (disc)
+      {
+        json["planned_diameter_mm"] = planned_length;
+        json["planned_area_mm2"]    = planned_area_mm2;
+      }
+    else
+      {
+        json["planned_length_mm"] = planned_length;
+        json["cut_direction_deg"] = direction == 0 ? 0. : 90.;
+      }
+    json["gap_mm"]   = gap_mm;
+    json["area_mm2"] = area_mm2;
+    // an incision plans no area: its change has no reference
+    json["area_change_pct"] =
+      disc ? nlohmann::ordered_json(area_change_pct) : nlohmann::ordered_json();
+    json["length_mm"]       = length_mm;
+    json["aspect_ratio"]    = aspect_ratio;
+    json["orientation_deg"] = orientation_deg;
+    return json;
   }
+
+
+  namespace
+  {
+    /// Angle of @p axis from x, degrees in [0, 180).
+    double
+    axis_angle(const double x, const double y)
+    {
+      double angle = std::atan2(y, x) * 180. / M_PI;
+      if (angle < 0)
+        angle += 180;
+      if (angle >= 180)
+        angle -= 180;
+      return angle;
+    }
+
+
+    /// Area of the closed polygon @p outline projected on the plane z = 0
+    /// (positive), and its centroidal second moments of area divided by the
+    /// area, C = int (x - c)(x - c)^T dA / A (2 x 2).
+    double
+    polygon_moments(const std::vector<Point<3>> &outline,
+                    SymmetricTensor<2, 2>       &C)
+    {
+      double area = 0, cx = 0, cy = 0, xx = 0, yy = 0, xy = 0;
+      for (unsigned int k = 0; k < outline.size(); ++k)
+        {
+          const Point<3> &a = outline[k],
+                         &b = outline[(k + 1) % outline.size()];
+          const double c    = a[0] * b[1] - b[0] * a[1];
+          area += c / 2;
+          cx += (a[0] + b[0]) * c / 6;
+          cy += (a[1] + b[1]) * c / 6;
+          xx += (a[0] * a[0] + a[0] * b[0] + b[0] * b[0]) * c / 12;
+          yy += (a[1] * a[1] + a[1] * b[1] + b[1] * b[1]) * c / 12;
+          xy +=
+            (a[0] * b[1] + 2 * a[0] * a[1] + 2 * b[0] * b[1] + b[0] * a[1]) *
+            c / 24;
+        }
+      // the orientation's sign cancels in every ratio to the area
+      cx /= area;
+      cy /= area;
+      C[0][0] = xx / area - cx * cx;
+      C[1][1] = yy / area - cy * cy;
+      C[0][1] = xy / area - cx * cy;
+      return std::abs(area);
+    }
+
+
+    /// The rim of an excision: the deformed and reference positions of
+    /// the skin-surface vertices on the disc's edge, sorted by angle.
+    void
+    measure_excision(const std::map<std::pair<int, double>, Point<3>> &rim,
+                     const std::map<double, Point<3>> &reference,
+                     WoundShape                       &wound)
+    {
+      std::vector<Point<3>> outline, planned;
+      for (const auto &[key, x] : rim)
+        {
+          wound.lips.push_back({0, key.second, x});
+          outline.push_back(x);
+          planned.push_back(reference.at(key.second));
+        }
+      AssertThrow(outline.size() >= 8,
+                  ExcMessage("The excision's rim was not found on the mesh (" +
+                             std::to_string(outline.size()) + " points)."));
+      SymmetricTensor<2, 2> C, C_planned;
+      wound.area_mm2         = polygon_moments(outline, C);
+      wound.planned_area_mm2 = polygon_moments(planned, C_planned);
+      wound.area_change_pct =
+        100. * (wound.area_mm2 / wound.planned_area_mm2 - 1.);
+      // the ellipse of the same area and moments: C = diag(a^2, b^2) / 4
+      const auto eigen = eigenvectors(C);
+      wound.length_mm  = 4. * std::sqrt(std::max(eigen[0].first, 0.));
+      wound.gap_mm     = 4. * std::sqrt(std::max(eigen[1].first, 0.));
+      wound.aspect_ratio =
+        wound.gap_mm > 0 ? wound.length_mm / wound.gap_mm : 0.;
+      wound.orientation_deg =
+        axis_angle(eigen[0].second[0], eigen[0].second[1]);
+    }
+  } // namespace
 
 
   std::string
@@ -42,8 +136,9 @@ namespace ssc
   WoundShape
   measure_wound(const DisplacementField &field, const Incision &incision)
   {
-    const unsigned int along                      = incision.direction,
-                       across                     = incision.normal_direction();
+    const bool         disc   = incision.shape == Incision::Shape::disc;
+    const unsigned int along  = incision.direction,
+                       across = incision.normal_direction();
     const FESystem<3>                   &fe       = field.fe();
     const TrilinosWrappers::MPI::Vector &solution = field.solution();
     const double tolerance = 1e-9 * (1. + incision.length);
@@ -59,17 +154,24 @@ namespace ssc
               face->at_boundary() && face->boundary_id() == BoundaryId::cut;
           if (!on_cut)
             continue;
-          const int side = cell->center()[across] > 0 ? 1 : -1;
+          const int side = disc ? 0 : cell->center()[across] > 0 ? 1 : -1;
           for (const unsigned int v : cell->vertex_indices())
             {
               const Point<3> X = cell->vertex(v);
-              if (std::abs(X[across]) > tolerance || std::abs(X[2]) > tolerance)
+              const double   r = std::hypot(X[0], X[1]);
+              if (std::abs(X[2]) > tolerance ||
+                  (disc ? std::abs(r - incision.length / 2) > tolerance :
+                          std::abs(X[across]) > tolerance))
                 continue;
               Point<3> x = X;
               for (unsigned int i = 0; i < fe.n_dofs_per_vertex(); ++i)
                 x[fe.system_to_component_index(v * fe.n_dofs_per_vertex() + i)
                     .first] += solution(cell->vertex_dof_index(v, i));
-              local.push_back({double(side), X[along], x[0], x[1], x[2]});
+              local.push_back({double(side),
+                               disc ? std::atan2(X[1], X[0]) : X[along],
+                               x[0],
+                               x[1],
+                               x[2]});
             }
         }
 
@@ -81,8 +183,21 @@ namespace ssc
         lips[{static_cast<int>(p[0]), p[1]}] = Point<3>(p[2], p[3], p[4]);
 
     WoundShape wound;
+    wound.shape          = incision.shape;
     wound.planned_length = incision.length;
     wound.direction      = incision.direction;
+    if (disc)
+      {
+        // the reference rim: the disc's circle at the same angles
+        std::map<double, Point<3>> reference;
+        for (const auto &[key, x] : lips)
+          reference[key.second] =
+            Point<3>(incision.length / 2 * std::cos(key.second),
+                     incision.length / 2 * std::sin(key.second),
+                     0.);
+        measure_excision(lips, reference, wound);
+        return wound;
+      }
     std::vector<std::pair<double, Point<3>>> lower, upper;
     for (const auto &[key, x] : lips)
       {
@@ -114,11 +229,7 @@ namespace ssc
     const Tensor<1, 3> axis = lower.back().second - lower.front().second;
     wound.length_mm         = std::hypot(axis[0], axis[1]);
     wound.aspect_ratio = wound.gap_mm > 0 ? wound.length_mm / wound.gap_mm : 0.;
-    wound.orientation_deg = std::atan2(axis[1], axis[0]) * 180. / M_PI;
-    if (wound.orientation_deg < 0)
-      wound.orientation_deg += 180;
-    if (wound.orientation_deg >= 180)
-      wound.orientation_deg -= 180;
+    wound.orientation_deg = axis_angle(axis[0], axis[1]);
     return wound;
   }
 } // namespace ssc

@@ -10,20 +10,29 @@ namespace ssc
   using namespace dealii;
 
   /**
-   * A straight incision through the top layers of the patch, centred on
-   * the patch centre: a segment of the skin surface along x (@p direction
-   * 0) or y (1), cut down through the top @p n_cut_layers layers. The mesh
-   * is split along it (cut_coarse_mesh()), so its two faces are free
-   * boundaries (BoundaryId::cut) that the pre-tension of the skin can pull
-   * apart. Septa and ligaments need nothing: each of their quadrature
-   * points is tied to the one background cell it lies in, so a septum or a
-   * ligament that crosses the cut is cut with it.
+   * A cut of the top layers of the patch, centred on the patch centre: a
+   * straight incision, a segment of the skin surface along x (@p direction
+   * 0) or y (1), or an excision, a disc of the top layers removed; either
+   * down through the top @p n_cut_layers layers. The mesh is cut along it
+   * (cut_coarse_mesh()), so its faces are free boundaries (BoundaryId::cut)
+   * that the pre-tension of the skin can pull apart. Septa and ligaments
+   * need nothing: each of their quadrature points is tied to the one
+   * background cell it lies in, so a septum or a ligament that crosses the
+   * cut is cut with it (and in an excision, those inside the disc go with
+   * its cells).
    */
   struct Incision
   {
-    /// Length of the cut, mm (0: no cut).
+    enum class Shape
+    {
+      line,
+      disc
+    };
+
+    Shape shape = Shape::line;
+    /// Length of the cut, or the disc's diameter, mm (0: no cut).
     double length = 0;
-    /// The direction the cut runs along: 0 (x) or 1 (y).
+    /// The direction a line runs along: 0 (x) or 1 (y).
     unsigned int direction = 0;
     /// How many layers, from the skin down, the cut goes through.
     unsigned int n_cut_layers = 1;
@@ -34,7 +43,7 @@ namespace ssc
       return length == 0;
     }
 
-    /// The direction across the cut (its faces' normal).
+    /// The direction across a line (its faces' normal).
     unsigned int
     normal_direction() const
     {
@@ -43,16 +52,19 @@ namespace ssc
   };
 
   /**
-   * Splits the coarse mesh @p coarse, given in the layer chart (x, y
+   * Cuts the coarse mesh @p coarse, given in the layer chart (x, y
    * physical, the layers of unit height stacked below z = 0, @p n_layers
-   * of them), along @p incision: every vertex strictly inside the cut's
-   * surface is duplicated, and the cells on the positive side of it take
-   * the copy; the vertices on the cut's front (its two ends and its floor)
-   * stay shared. All boundary faces get the box's colorized ids again, the
-   * faces of the cut BoundaryId::cut. Throws, naming @p parameter, unless
-   * the cut runs along mesh lines (the plane through the centre across
-   * @p direction and its two ends are vertex planes of the mesh) and ends
-   * inside the patch.
+   * of them), along @p incision. A line: every vertex strictly inside the
+   * cut's surface is duplicated, and the cells on the positive side of it
+   * take the copy; the vertices on the cut's front (its two ends and its
+   * floor) stay shared. Throws, naming @p parameter, unless the cut runs
+   * along mesh lines (the plane through the centre across @p direction and
+   * its two ends are vertex planes of the mesh) and ends inside the patch.
+   * A disc: the cells of the cut layers inside the square |x|, |y| <
+   * length / 2 are removed, which the layer map's DiskFittingMap of that
+   * radius makes a disc (the caller checks the radius); its sides must be
+   * vertex planes. All boundary faces get the box's colorized ids again,
+   * the faces of the cut BoundaryId::cut.
    */
   void
   cut_coarse_mesh(Triangulation<3>  &coarse,

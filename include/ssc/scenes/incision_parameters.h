@@ -3,8 +3,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
 #include <string>
+#include <utility>
 
+#include <ssc/base/enum_table.h>
 #include <ssc/mesh/incision.h>
 #include <ssc/mesh/layer_stack.h>
 
@@ -12,16 +15,24 @@ namespace ssc
 {
   using namespace dealii;
 
+  constexpr std::array<std::pair<Incision::Shape, const char *>, 2>
+  enum_table(Incision::Shape)
+  {
+    return {{{Incision::Shape::line, "line"}, {Incision::Shape::disc, "disc"}}};
+  }
+
   /**
    * The incision scene (section "Incision"): a straight cut of the
    * pre-tensioned skin through the patch centre, made once along x and
-   * once along y, and the wound each opens as the pre-tension comes on.
+   * once along y, or a disc of it excised, and the wound that opens as the
+   * pre-tension comes on.
    */
   struct IncisionParameters
   {
-    double       length        = 10;
-    std::string  deepest_layer = "skin";
-    unsigned int load_steps    = 4;
+    Incision::Shape shape         = Incision::Shape::line;
+    double          length        = 10;
+    std::string     deepest_layer = "skin";
+    unsigned int    load_steps    = 4;
 
     /// Declares section "Incision", bound to the members.
     void

@@ -18,6 +18,9 @@ namespace ssc
    * wound it opens is measured after each step (WoundShape). Where the
    * skin's law has Langer's lines (Gasser-Ogden-Holzapfel), each cut is
    * named along or across them, and the ratio of their gaps is reported.
+   * With Incision/Shape = disc, a disc of the top layers is excised instead
+   * (one model): the wound's area change, aspect ratio and orientation,
+   * and the area change of the freed disc ("disc").
    *
    * Writes into output/<run name>/: summary.json (key "wound"), wound.csv
    * (per cut and step), wound_lips.csv (the lips' outlines at full
@@ -29,7 +32,8 @@ namespace ssc
   public:
     using Scene::Scene;
 
-    /// The wounds of the cuts along x and along y at full pre-tension.
+    /// The wounds of the cuts along x and along y (or of the excision) at
+    /// full pre-tension.
     std::vector<WoundShape>
     run();
   };

@@ -23,29 +23,40 @@ namespace ssc
   };
 
   /**
-   * The outline of an incision's wound at the skin surface after the
-   * tissue around it has moved: its two lips (the edges where the cut's
-   * faces meet the skin surface, which coincide before loading) and the
-   * measures surgeons and the cadaver studies use.
+   * The outline of a wound at the skin surface after the
+   * tissue around it has moved: an incision's two lips (the edges where
+   * the cut's faces meet the skin surface, which coincide before loading)
+   * or an excision's rim, and the measures surgeons and the cadaver
+   * studies use.
    */
   struct WoundShape
   {
-    /// The planned cut, mm, and the direction it runs along (0 x, 1 y).
-    double       planned_length = 0;
-    unsigned int direction      = 0;
+    /// The planned cut: its shape, length (the disc's diameter), mm, and
+    /// the direction a line runs along (0 x, 1 y).
+    Incision::Shape shape          = Incision::Shape::line;
+    double          planned_length = 0;
+    unsigned int    direction      = 0;
+    /// An excision's planned area (the rim's polygon before loading), mm^2.
+    double planned_area_mm2 = 0;
+    /// An excision's area change, per cent of the planned area.
+    double area_change_pct = 0;
     /// The widest opening: the largest distance between the two lips'
-    /// points of the same reference position, mm.
+    /// points of the same reference position, mm; of an excision, the
+    /// short axis of the ellipse with the rim's area and second moments.
     double gap_mm = 0;
-    /// The area between the lips, projected on the skin plane, mm^2.
+    /// The area between the lips (inside the rim), projected on the skin
+    /// plane, mm^2.
     double area_mm2 = 0;
-    /// The distance between the cut's two ends after loading, mm.
+    /// The distance between the cut's two ends after loading, mm; of an
+    /// excision, the long axis of that ellipse.
     double length_mm = 0;
     /// length_mm / gap_mm: the wound's slenderness.
     double aspect_ratio = 0;
-    /// The angle of the wound's long axis (end to end) from x, degrees in
-    /// [0, 180).
+    /// The angle of the wound's long axis (end to end, or the ellipse's)
+    /// from x, degrees in [0, 180).
     double orientation_deg = 0;
-    /// Lip points, sorted by side and t.
+    /// Lip points, sorted by side and t (an excision's rim: side 0, t its
+    /// angle in the reference).
     std::vector<WoundLipPoint> lips;
 
     /// The wound's entry of summary.json.
