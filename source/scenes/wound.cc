@@ -76,6 +76,8 @@ namespace ssc
             (a[0] * b[1] + 2 * a[0] * a[1] + 2 * b[0] * b[1] + b[0] * a[1]) *
             c / 24;
         }
+      if (area == 0) // a closed wound: no moments
+        return 0;
       // the orientation's sign cancels in every ratio to the area
       cx /= area;
       cy /= area;
@@ -86,19 +88,22 @@ namespace ssc
     }
 
 
-    /// The rim of an excision: the deformed and reference positions of
-    /// the skin-surface vertices on the disc's edge, sorted by angle.
+    /// The rim of an excision of @p radius: the deformed positions of the
+    /// skin-surface vertices on the disc's edge by their angle, and the
+    /// planned rim, the same vertices on the circle before loading.
     void
     measure_excision(const std::map<std::pair<int, double>, Point<3>> &rim,
-                     const std::map<double, Point<3>> &reference,
-                     WoundShape                       &wound)
+                     const double                                      radius,
+                     WoundShape                                       &wound)
     {
       std::vector<Point<3>> outline, planned;
       for (const auto &[key, x] : rim)
         {
           wound.lips.push_back({0, key.second, x});
           outline.push_back(x);
-          planned.push_back(reference.at(key.second));
+          planned.emplace_back(radius * std::cos(key.second),
+                               radius * std::sin(key.second),
+                               0.);
         }
       AssertThrow(outline.size() >= 8,
                   ExcMessage("The excision's rim was not found on the mesh (" +
@@ -188,14 +193,7 @@ namespace ssc
     wound.direction      = incision.direction;
     if (disc)
       {
-        // the reference rim: the disc's circle at the same angles
-        std::map<double, Point<3>> reference;
-        for (const auto &[key, x] : lips)
-          reference[key.second] =
-            Point<3>(incision.length / 2 * std::cos(key.second),
-                     incision.length / 2 * std::sin(key.second),
-                     0.);
-        measure_excision(lips, reference, wound);
+        measure_excision(lips, incision.length / 2, wound);
         return wound;
       }
     std::vector<std::pair<double, Point<3>>> lower, upper;
@@ -213,19 +211,14 @@ namespace ssc
     for (unsigned int k = 0; k < lower.size(); ++k)
       wound.gap_mm =
         std::max(wound.gap_mm, lower[k].second.distance(upper[k].second));
-    // shoelace over the outline: one lip forwards, the other back
+    // the outline: one lip forwards, the other back
     std::vector<Point<3>> outline;
     for (const auto &p : upper)
       outline.push_back(p.second);
     for (auto p = lower.rbegin(); p != lower.rend(); ++p)
       outline.push_back(p->second);
-    double twice_area = 0;
-    for (unsigned int k = 0; k < outline.size(); ++k)
-      {
-        const Point<3> &a = outline[k], &b = outline[(k + 1) % outline.size()];
-        twice_area += a[0] * b[1] - b[0] * a[1];
-      }
-    wound.area_mm2          = std::abs(twice_area) / 2;
+    SymmetricTensor<2, 2> moments;
+    wound.area_mm2          = polygon_moments(outline, moments);
     const Tensor<1, 3> axis = lower.back().second - lower.front().second;
     wound.length_mm         = std::hypot(axis[0], axis[1]);
     wound.aspect_ratio = wound.gap_mm > 0 ? wound.length_mm / wound.gap_mm : 0.;
