@@ -83,17 +83,23 @@ def run_variant(prm, label, refinements, overrides):
         return result.summary(), round(result.wall_s, 1)
 
 
+def common_columns(label, refinements, summary):
+    """The first columns of every row: the variant, its mesh and the skin
+    tension far from the cut."""
+    tension = summary["wound"]["skin_tension_N_per_m"]
+    return {"variant": label, "refinements": refinements,
+            "dofs": summary["dofs"],
+            "skin_tension_x_N_per_m": tension["x"],
+            "skin_tension_y_N_per_m": tension["y"]}
+
+
 def measure_excision():
     rows = []
     for label, refinements, overrides in EXCISION_VARIANTS:
         s, wall = run_variant(EXCISION, label, refinements, overrides)
         wound = s["wound"]
         rows.append({
-            "variant": label,
-            "refinements": refinements,
-            "dofs": s["dofs"],
-            "skin_tension_x_N_per_m": wound["skin_tension_N_per_m"]["x"],
-            "skin_tension_y_N_per_m": wound["skin_tension_N_per_m"]["y"],
+            **common_columns(label, refinements, s),
             "wound_area_change_pct": wound["area_change_pct"],
             "wound_aspect_ratio": wound["aspect_ratio"],
             "wound_orientation_deg": wound["orientation_deg"],
@@ -111,14 +117,9 @@ def measure():
     rows = []
     for label, refinements, overrides in VARIANTS:
         s, wall = run_variant(SCENE, label, refinements, overrides)
-        wound = s["wound"]
-        x, y = wound["cut_along_x"], wound["cut_along_y"]
+        x, y = s["wound"]["cut_along_x"], s["wound"]["cut_along_y"]
         rows.append({
-            "variant": label,
-            "refinements": refinements,
-            "dofs": s["dofs"],
-            "skin_tension_x_N_per_m": wound["skin_tension_N_per_m"]["x"],
-            "skin_tension_y_N_per_m": wound["skin_tension_N_per_m"]["y"],
+            **common_columns(label, refinements, s),
             "gap_cut_x_mm": x["gap_mm"],
             "gap_cut_y_mm": y["gap_mm"],
             "area_cut_x_mm2": x["area_mm2"],
