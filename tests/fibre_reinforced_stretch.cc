@@ -10,14 +10,16 @@
 // block whose stress-free state is stretched in the plane by 1.03 (Layer
 // stack/.../Prestretch: the law at F F_p, F_p = diag(p, p, 1/p^2), the closed
 // form at the stretches l_i of F F_p; the force on x = 1 is still tau_11 over
-// the stretch of F). For F = diag(l1, l2, l3) and fibres a0 = (cos phi, sin
+// the stretch of F); and equibiaxial with fibres recruited at lambda_r = 1.05
+// (they join in during the stretch to 1.1) and 1.2 (slack throughout: the
+// matrix alone). For F = diag(l1, l2, l3) and fibres a0 = (cos phi, sin
 // phi, 0), phi = theta +- gamma, with the lines at theta = 0 or 90 degrees the
-// shear terms of the two families cancel and
-//   E     = kappa (l1^2 + l2^2 + l3^2)
-//           + (1 - 3 kappa)(l1^2 cos^2 phi + l2^2 sin^2 phi) - 1,
-//   tau_f = 4 <psi'> (kappa l1^2 + (1 - 3 kappa) l1^2 cos^2 phi,
-//                     kappa l2^2 + (1 - 3 kappa) l2^2 sin^2 phi,
-//                     kappa l3^2),  psi' = k1 E exp(k2 E^2),
+// shear terms of the two families cancel and, with r = 1 / lambda_r^2,
+//   E     = r (kappa (l1^2 + l2^2 + l3^2)
+//              + (1 - 3 kappa)(l1^2 cos^2 phi + l2^2 sin^2 phi)) - 1,
+//   tau_f = 4 <psi'> r (kappa l1^2 + (1 - 3 kappa) l1^2 cos^2 phi,
+//                       kappa l2^2 + (1 - 3 kappa) l2^2 sin^2 phi,
+//                       kappa l3^2),  psi' = k1 E exp(k2 E^2),
 //   tau   = dev(mu lb^2) + tau_f + J U'(J),  lb_i = J^{-1/3} l_i;
 // the free faces' tau_ii = 0 are solved for their stretches by nested
 // bisection, and the force on the face x = 1 is tau_11 / l1 times its 4
@@ -58,15 +60,18 @@ namespace
     const double c2    = std::cos(phi) * std::cos(phi);
     const double s2    = std::sin(phi) * std::sin(phi);
     const std::array<double, 3> l2 = {l[0] * l[0], l[1] * l[1], l[2] * l[2]};
-    const double                E  = kappa * (l2[0] + l2[1] + l2[2]) +
-                     (1 - 3 * kappa) * (l2[0] * c2 + l2[1] * s2) - 1;
+    const double                r =
+      1. / (fibres.recruitment_stretch * fibres.recruitment_stretch);
+    const double E = r * (kappa * (l2[0] + l2[1] + l2[2]) +
+                          (1 - 3 * kappa) * (l2[0] * c2 + l2[1] * s2)) -
+                     1;
     const double                dpsi  = E > 0 ? fibres.fibre_stiffness * E *
                                   std::exp(fibres.fibre_exponent * E * E) :
                                                 0.;
     const std::array<double, 3> fibre = {
-      4 * dpsi * (kappa + (1 - 3 * kappa) * c2) * l2[0],
-      4 * dpsi * (kappa + (1 - 3 * kappa) * s2) * l2[1],
-      4 * dpsi * kappa * l2[2]};
+      4 * dpsi * r * (kappa + (1 - 3 * kappa) * c2) * l2[0],
+      4 * dpsi * r * (kappa + (1 - 3 * kappa) * s2) * l2[1],
+      4 * dpsi * r * kappa * l2[2]};
     const double          matrix_scale = mu * std::pow(J, -2. / 3.);
     const double          mean         = (l2[0] + l2[1] + l2[2]) / 3;
     const double          pressure = J * 0.5 * bulk * (J - 1 / J); // J U'(J)
@@ -135,6 +140,7 @@ main(int argc, char **argv)
     double      lambda;
     bool        equibiaxial;
     double      prestretch;
+    double      recruitment = 1.;
   };
   for (const Case &c :
        {Case{"uniaxial along the lines", 0., 0.45, 1.1, false, 1.},
@@ -142,7 +148,21 @@ main(int argc, char **argv)
         Case{"uniaxial compression along", 0., 0.45, 0.8, false, 1.},
         Case{"equibiaxial", 0., 0.49999, 1.1, true, 1.},
         Case{
-          "equibiaxial, prestretched by 1.03", 0., 0.49999, 1.02, true, 1.03}})
+          "equibiaxial, prestretched by 1.03", 0., 0.49999, 1.02, true, 1.03},
+        Case{"equibiaxial, fibres recruited at 1.05",
+             0.,
+             0.49999,
+             1.1,
+             true,
+             1.,
+             1.05},
+        Case{"equibiaxial, fibres recruited at 1.2 (slack)",
+             0.,
+             0.49999,
+             1.1,
+             true,
+             1.,
+             1.2}})
     for (const auto formulation :
          {ssc::Formulation::displacement, ssc::Formulation::mixed})
       {
@@ -159,7 +179,8 @@ main(int argc, char **argv)
           "subsection Layer stack\n subsection block\n"
           "  subsection Gasser-Ogden-Holzapfel\n"
           "   set Langer line angle = " +
-          std::to_string(c.theta) + "\n  end\n end\nend\n");
+          std::to_string(c.theta) + "\n   set Fibre recruitment stretch = " +
+          std::to_string(c.recruitment) + "\n  end\n end\nend\n");
         const auto &fibres =
           dynamic_cast<const ssc::GasserOgdenHolzapfelParameters &>(
             laws.of("block", "Gasser-Ogden-Holzapfel"));

@@ -17,6 +17,7 @@
 #include <iomanip>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -105,23 +106,36 @@ main(int argc, char **argv)
       deallog << state << ": det F = " << determinant(F) << std::endl;
       // every registered law, and two laws wrapped with an in-plane
       // prestretch (PrestretchedMaterial)
-      std::vector<std::pair<std::string, double>> laws;
+      // (model, prestretch, fibre recruitment stretch)
+      std::vector<std::tuple<std::string, double, double>> laws;
       for (const std::string &name : ssc::MaterialRegistry::names())
-        laws.emplace_back(name, 1.);
-      laws.emplace_back("neo-Hookean", 1.1);
-      laws.emplace_back("Gasser-Ogden-Holzapfel", 1.05);
-      for (const auto &[model, prestretch] : laws)
+        laws.emplace_back(name, 1., 1.);
+      laws.emplace_back("neo-Hookean", 1.1, 1.);
+      laws.emplace_back("Gasser-Ogden-Holzapfel", 1.05, 1.);
+      laws.emplace_back("Gasser-Ogden-Holzapfel", 1., 1.1);
+      for (const auto &[model, prestretch, recruitment] : laws)
         {
-          const std::string name = prestretch == 1. ?
-                                     model :
-                                     model + " prestretched by " +
-                                       std::to_string(prestretch).substr(0, 4);
-          ssc::Layer        layer;
-          layer.youngs_modulus    = 0.02;
-          layer.poisson_ratio     = 0.45;
-          layer.material_model    = model;
-          layer.prestretch        = prestretch;
-          const auto         law  = ssc::make_material(layer);
+          std::string name = model;
+          if (prestretch != 1.)
+            name +=
+              " prestretched by " + std::to_string(prestretch).substr(0, 4);
+          if (recruitment != 1.)
+            name += " recruited at " + std::to_string(recruitment).substr(0, 3);
+          ssc::Layer layer;
+          layer.name           = "skin";
+          layer.youngs_modulus = 0.02;
+          layer.poisson_ratio  = 0.45;
+          layer.material_model = model;
+          layer.prestretch     = prestretch;
+          ssc::LayerLawParameters layer_laws;
+          ParameterHandler        prm;
+          layer_laws.add_parameters(prm, {"skin"});
+          prm.parse_input_from_string(
+            "subsection Layer stack\n subsection skin\n"
+            "  subsection Gasser-Ogden-Holzapfel\n"
+            "   set Fibre recruitment stretch = " +
+            std::to_string(recruitment) + "\n  end\n end\nend\n");
+          const auto         law  = ssc::make_material(layer, layer_laws);
           const double       mu   = law->moduli().shear_modulus;
           const double       J    = determinant(F);
           const Tensor<2, 3> P_fd = energy_gradient(*law, F);
@@ -214,7 +228,7 @@ main(int argc, char **argv)
 
           // whether the state puts the fibres in tension: the stress differs
           // from that of the matrix alone
-          if (name == "Gasser-Ogden-Holzapfel")
+          if (model == "Gasser-Ogden-Holzapfel" && prestretch == 1.)
             {
               layer.material_model = "neo-Hookean";
               const auto matrix    = ssc::make_material(layer);

@@ -37,6 +37,17 @@ namespace ssc
       "lines, in the plane of the skin (+-gamma). 41: Ni Annaidh et al. 2012.",
       Patterns::Double(0., 90.));
     prm.add_parameter(
+      "Fibre recruitment stretch",
+      recruitment_stretch,
+      "lambda_r >= 1: the fibres are slack until their pseudo-stretch "
+      "(kappa I1 + (1 - 3 kappa) I4)^(1/2) exceeds it, the toe region of "
+      "skin's tensile curve. 1: they bear load from zero strain, as Ni "
+      "Annaidh et al. 2012 fitted them. Skin's toe region ends at strains "
+      "of about 0.1-0.3 in uniaxial tension (reviewed by Joodaki & Panzer "
+      "2018, Proc Inst Mech Eng H 232:323); the prestretch of the layer "
+      "puts the fibres at the end of it in vivo.",
+      Patterns::Double(1.));
+    prm.add_parameter(
       "Langer line angle",
       langer_line_angle,
       "The angle (degrees) of Langer's lines to the x axis, turning towards "
@@ -66,6 +77,8 @@ namespace ssc
     , k1(parameters.fibre_stiffness)
     , k2(parameters.fibre_exponent)
     , kappa(parameters.fibre_dispersion)
+    , recruitment(
+        1. / (parameters.recruitment_stretch * parameters.recruitment_stretch))
     , fibre_angle(parameters.fibre_angle * numbers::PI / 180.)
     , langer_line_angle(parse_surface_expression(parameters.langer_line_angle,
                                                  "Langer line angle"))
@@ -105,11 +118,13 @@ namespace ssc
     for (const Tensor<1, 3> &a0 : fibre_directions(X))
       {
         const Tensor<1, 3> a = F * a0;
-        const double E = kappa * trace(b) + (1. - 3. * kappa) * (a * a) - 1.;
+        const double       E =
+          recruitment * (kappa * trace(b) + (1. - 3. * kappa) * (a * a)) - 1.;
         if (!(E > 0.)) // the family bears tension only
           continue;
         const SymmetricTensor<2, 3> h =
-          kappa * b + (1. - 3. * kappa) * symmetrize(outer_product(a, a));
+          recruitment *
+          (kappa * b + (1. - 3. * kappa) * symmetrize(outer_product(a, a)));
         const double growth = std::exp(k2 * E * E);
         tau += 2. * k1 * E * growth * h;
         if (fibre_tangent != nullptr)
@@ -154,8 +169,9 @@ namespace ssc
     double                      psi = matrix.energy(X, F);
     for (const Tensor<1, 3> &a0 : fibre_directions(X))
       {
-        const double E =
-          kappa * trace(C) + (1. - 3. * kappa) * (a0 * (C * a0)) - 1.;
+        const double E = recruitment * (kappa * trace(C) +
+                                        (1. - 3. * kappa) * (a0 * (C * a0))) -
+                         1.;
         if (E > 0.)
           // k1/(2 k2) (exp(k2 E^2) - 1), whose limit at k2 = 0 is k1/2 E^2
           psi += 0.5 * k1 * (k2 > 0. ? std::expm1(k2 * E * E) / k2 : E * E);

@@ -44,6 +44,9 @@ namespace ssc
     double fibre_dispersion = 0.1404;
     /// The angle of each of the two families to Langer's lines, degrees.
     double fibre_angle = 41.;
+    /// lambda_r >= 1: the stretch at which the wavy fibres become straight
+    /// and start to bear load (1: at once, as Ni Annaidh et al. fitted).
+    double recruitment_stretch = 1.;
     /// Langer's lines: their angle to the x axis (towards y), degrees, as
     /// a muParser expression of x and y (mm).
     std::string langer_line_angle = "0";
@@ -81,6 +84,18 @@ namespace ssc
    * exp(k2 E_i^2). At F = I every E_i = 0: the law reduces to the layer's
    * isotropic small-strain moduli, and the fibres join in as soon as they
    * are stretched (the tangent jumps by 4 k1 h (x) h there).
+   *
+   * A recruitment stretch lambda_r > 1 gives the fibres the toe region of
+   * skin's tensile curve (the collagen straightens before it bears load):
+   *   E_i = (kappa I1 + (1 - 3 kappa) I4i) / lambda_r^2 - 1,
+   * so a family is slack until its pseudo-stretch exceeds lambda_r, and h_i
+   * above carries the factor 1 / lambda_r^2. Ni Annaidh et al.'s
+   * parameters were fitted from zero strain (lambda_r = 1): with them the
+   * fibres are 10^4 times stiffer than the in vivo matrix from the first
+   * strain, and an in vivo tension of 6-11 N/m stretches such skin by 2e-5
+   * only. lambda_r equal to the skin's prestretch puts the fibres at the
+   * end of their toe in vivo: the matrix carries the resting tension, the
+   * fibres what a closure or a load adds.
    */
   class GasserOgdenHolzapfelMaterial : public Material
   {
@@ -130,6 +145,8 @@ namespace ssc
     const double             k1;
     const double             k2;
     const double             kappa;
+    /// 1 / lambda_r^2.
+    const double recruitment;
     /// gamma, radians.
     const double                       fibre_angle;
     std::shared_ptr<FunctionParser<2>> langer_line_angle;
