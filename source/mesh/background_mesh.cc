@@ -269,18 +269,25 @@ namespace ssc
                                  "An excision needs Mesh/Layout = box with a "
                                  "Fitted circle radius of half the disc's "
                                  "diameter: the mesh lines follow its edge." :
-                                 "An incision needs Mesh/Layout = box without "
-                                 "a Fitted circle radius: it is cut along the "
-                                 "box's straight mesh lines."));
+                                 "An incision or an elliptic excision needs "
+                                 "Mesh/Layout = box without a Fitted circle "
+                                 "radius: it is cut along the box's mesh "
+                                 "lines (which the ellipse's own map bends "
+                                 "onto its rim)."));
         cut_coarse_mesh(coarse, incision, n_layers, "Incision/Length");
       }
 
-    // the o-grid's lateral coordinates are physical already
+    // the o-grid's lateral coordinates are physical already; an ellipse's
+    // rim is fitted by the map of its own semi-axes
+    const std::array<double, 2> fitted =
+      incision.shape == Incision::Shape::ellipse ?
+        incision.semi_axes() :
+        std::array<double, 2>{
+          {parameters.fitted_circle_radius, parameters.fitted_circle_radius}};
     const LayerManifold layer_map(layers,
-                                  DiskFittingMap(
-                                    parameters.layout == MeshLayout::box ?
-                                      parameters.fitted_circle_radius :
-                                      0.));
+                                  parameters.layout == MeshLayout::box ?
+                                    DiskFittingMap(fitted[0], fitted[1]) :
+                                    DiskFittingMap());
     GridTools::transform(
       [&layer_map](const Point<3> &p) { return layer_map.push_forward(p); },
       coarse);

@@ -16,6 +16,31 @@ namespace ssc
   Point<2>
   DiskFittingMap::forward(const Point<2> &p) const
   {
+    return scaled(p, true);
+  }
+
+
+  Point<2>
+  DiskFittingMap::inverse(const Point<2> &q) const
+  {
+    return scaled(q, false);
+  }
+
+
+  Point<2>
+  DiskFittingMap::scaled(const Point<2> &x, const bool forwards) const
+  {
+    if (a <= 0)
+      return x;
+    const Point<2> p(x[0] / scale[0], x[1] / scale[1]);
+    const Point<2> image = forwards ? circle_forward(p) : circle_inverse(p);
+    return Point<2>(image[0] * scale[0], image[1] * scale[1]);
+  }
+
+
+  Point<2>
+  DiskFittingMap::circle_forward(const Point<2> &p) const
+  {
     const double rho = p.norm();
     if (a <= 0 || rho == 0)
       return p;
@@ -25,7 +50,7 @@ namespace ssc
 
 
   Point<2>
-  DiskFittingMap::inverse(const Point<2> &q) const
+  DiskFittingMap::circle_inverse(const Point<2> &q) const
   {
     const double R = q.norm();
     if (a <= 0 || R == 0)

@@ -76,24 +76,25 @@ namespace ssc
     }
 
 
-    /// The excision: the cells of the cut layers inside the square
-    /// |x|, |y| < @p half removed.
+    /// The excision: the cells of the cut layers inside the rectangle
+    /// |x| < @p semi_axes[0], |y| < @p semi_axes[1] removed.
     void
-    remove_disc(Triangulation<3>  &coarse,
-                const double       half,
-                const double       floor,
-                const double       tolerance,
-                const std::string &message)
+    remove_excision(Triangulation<3>            &coarse,
+                    const std::array<double, 2> &semi_axes,
+                    const double                 floor,
+                    const double                 tolerance,
+                    const std::string           &message)
     {
       const std::vector<Point<3>> &vertices = coarse.get_vertices();
       for (const unsigned int d : {0u, 1u})
-        for (const double side : {-half, half})
+        for (const double side : {-semi_axes[d], semi_axes[d]})
           check_vertex_plane(vertices, d, side, tolerance, message);
       std::set<Triangulation<3>::active_cell_iterator> removed;
       for (const auto &cell : coarse.active_cell_iterators())
         {
           const Point<3> c = cell->center();
-          if (std::abs(c[0]) < half && std::abs(c[1]) < half && c[2] > floor)
+          if (std::abs(c[0]) < semi_axes[0] && std::abs(c[1]) < semi_axes[1] &&
+              c[2] > floor)
             removed.insert(cell);
         }
       Triangulation<3> remaining(coarse.get_mesh_smoothing());
@@ -137,17 +138,28 @@ namespace ssc
     const char        *names[2] = {"x", "y"};
     const double       floor    = -static_cast<double>(incision.n_cut_layers);
     std::ostringstream message;
-    if (incision.shape == Incision::Shape::disc)
+    if (incision.excision())
       {
-        message << parameter << " = " << incision.length
-                << " mm: the disc reaches " << half << " mm from the centre, ";
+        const std::array<double, 2> semi_axes = incision.semi_axes();
+        message << parameter << ": the "
+                << (incision.shape == Incision::Shape::disc ? "disc" :
+                                                              "ellipse")
+                << " reaches " << semi_axes[0] << " mm along x and "
+                << semi_axes[1] << " mm along y from the centre, ";
         for (const unsigned int d : {0u, 1u})
-          AssertThrow(-half > lower[d] + tolerance &&
-                        half < upper[d] - tolerance,
+          AssertThrow(-2 * semi_axes[d] > lower[d] + tolerance &&
+                        2 * semi_axes[d] < upper[d] - tolerance,
                       ExcMessage(message.str() +
-                                 "beyond the patch: make it smaller or "
-                                 "widen the patch."));
-        remove_disc(coarse, half, floor, tolerance, message.str());
+                                 "and the mesh lines that follow its edge "
+                                 "blend back to straight ones at twice that, "
+                                 "beyond the patch: make it smaller or widen "
+                                 "the patch."));
+        AssertThrow(incision.shape == Incision::Shape::disc ||
+                      (incision.width > 0 && incision.width <= incision.length),
+                    ExcMessage(message.str() +
+                               "but an ellipse's width (short axis) must be "
+                               "positive and at most its length."));
+        remove_excision(coarse, semi_axes, floor, tolerance, message.str());
         set_boundary_ids(coarse, lower, upper, tolerance);
         return;
       }

@@ -15,12 +15,19 @@ namespace ssc
   nlohmann::ordered_json
   WoundShape::to_json() const
   {
-    const bool             disc = shape == Incision::Shape::disc;
+    const bool             disc = shape != Incision::Shape::line;
     nlohmann::ordered_json json;
-    if (disc)
+    if (shape == Incision::Shape::disc)
       {
         json["planned_diameter_mm"] = planned_length;
         json["planned_area_mm2"]    = planned_area_mm2;
+      }
+    else if (shape == Incision::Shape::ellipse)
+      {
+        json["planned_length_mm"]       = planned_length;
+        json["planned_width_mm"]        = planned_width;
+        json["planned_area_mm2"]        = planned_area_mm2;
+        json["long_axis_direction_deg"] = direction == 0 ? 0. : 90.;
       }
     else
       {
@@ -88,22 +95,21 @@ namespace ssc
     }
 
 
-    /// The rim of an excision of @p radius: the deformed positions of the
-    /// skin-surface vertices on the disc's edge by their angle, and the
-    /// planned rim, the same vertices on the circle before loading.
+    /// The rim of an excision: the deformed positions of the skin-surface
+    /// vertices on its edge by their angle, and the planned rim, the same
+    /// vertices on the disc or ellipse before loading (@p planned_rim).
     void
-    measure_excision(const std::map<std::pair<int, double>, Point<3>> &rim,
-                     const double                                      radius,
-                     WoundShape                                       &wound)
+    measure_excision(
+      const std::map<std::pair<int, double>, Point<3>> &rim,
+      const std::map<std::pair<int, double>, Point<3>> &planned_rim,
+      WoundShape                                       &wound)
     {
       std::vector<Point<3>> outline, planned;
       for (const auto &[key, x] : rim)
         {
           wound.lips.push_back({0, key.second, x});
           outline.push_back(x);
-          planned.emplace_back(radius * std::cos(key.second),
-                               radius * std::sin(key.second),
-                               0.);
+          planned.push_back(planned_rim.at(key));
         }
       AssertThrow(outline.size() >= 8,
                   ExcMessage("The excision's rim was not found on the mesh (" +
@@ -141,15 +147,17 @@ namespace ssc
   WoundShape
   measure_wound(const DisplacementField &field, const Incision &incision)
   {
-    const bool         disc   = incision.shape == Incision::Shape::disc;
-    const unsigned int along  = incision.direction,
-                       across = incision.normal_direction();
+    const bool         disc                       = incision.excision();
+    const auto         semi                       = incision.semi_axes();
+    const unsigned int along                      = incision.direction,
+                       across                     = incision.normal_direction();
     const FESystem<3>                   &fe       = field.fe();
     const TrilinosWrappers::MPI::Vector &solution = field.solution();
     const double tolerance = 1e-9 * (1. + incision.length);
 
-    // (side, t) -> deformed position, of the locally owned cells
-    std::vector<std::array<double, 5>> local;
+    // (side, t) -> deformed and reference position, of the locally owned
+    // cells
+    std::vector<std::array<double, 7>> local;
     for (const auto &cell : field.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary())
         {
@@ -163,37 +171,43 @@ namespace ssc
           for (const unsigned int v : cell->vertex_indices())
             {
               const Point<3> X = cell->vertex(v);
-              const double   r = std::hypot(X[0], X[1]);
+              const double   r = std::hypot(X[0] / semi[0], X[1] / semi[1]);
               if (std::abs(X[2]) > tolerance ||
-                  (disc ? std::abs(r - incision.length / 2) > tolerance :
+                  (disc ? std::abs(r - 1.) > tolerance / incision.length :
                           std::abs(X[across]) > tolerance))
                 continue;
               Point<3> x = X;
               for (unsigned int i = 0; i < fe.n_dofs_per_vertex(); ++i)
                 x[fe.system_to_component_index(v * fe.n_dofs_per_vertex() + i)
                     .first] += solution(cell->vertex_dof_index(v, i));
-              local.push_back({double(side),
-                               disc ? std::atan2(X[1], X[0]) : X[along],
-                               x[0],
-                               x[1],
-                               x[2]});
+              local.push_back({{double(side),
+                                disc ? std::atan2(X[1], X[0]) : X[along],
+                                x[0],
+                                x[1],
+                                x[2],
+                                X[0],
+                                X[1]}});
             }
         }
 
-    std::map<std::pair<int, double>, Point<3>> lips;
+    std::map<std::pair<int, double>, Point<3>> lips, planned;
     for (const auto &rank :
          Utilities::MPI::all_gather(field.dof_handler().get_communicator(),
                                     local))
       for (const auto &p : rank)
-        lips[{static_cast<int>(p[0]), p[1]}] = Point<3>(p[2], p[3], p[4]);
+        {
+          lips[{static_cast<int>(p[0]), p[1]}]    = Point<3>(p[2], p[3], p[4]);
+          planned[{static_cast<int>(p[0]), p[1]}] = Point<3>(p[5], p[6], 0.);
+        }
 
     WoundShape wound;
     wound.shape          = incision.shape;
     wound.planned_length = incision.length;
+    wound.planned_width  = incision.width;
     wound.direction      = incision.direction;
     if (disc)
       {
-        measure_excision(lips, incision.length / 2, wound);
+        measure_excision(lips, planned, wound);
         return wound;
       }
     std::vector<std::pair<double, Point<3>>> lower, upper;

@@ -35,7 +35,9 @@ namespace ssc
     /// the direction a line runs along (0 x, 1 y).
     Incision::Shape shape          = Incision::Shape::line;
     double          planned_length = 0;
-    unsigned int    direction      = 0;
+    /// An ellipse's planned short axis, mm.
+    double       planned_width = 0;
+    unsigned int direction     = 0;
     /// An excision's planned area (the rim's polygon before loading), mm^2.
     double planned_area_mm2 = 0;
     /// An excision's area change, per cent of the planned area.
