@@ -150,7 +150,7 @@ case "${1:-run}" in
     # the incision scenes' pictures (wound outlines, skin stress); their
     # Run/Name is the file's name
     case "$prm" in
-      *incision*.prm)
+      *incision*.prm | *excision*.prm | *closure*.prm)
         folder="$ROOT/output/$(basename "$prm" .prm)"
         if [ -f "$folder/wound_lips.csv" ]; then
           /usr/bin/python3 "$ROOT/scripts/plot_incision.py" "$folder"

@@ -5,7 +5,11 @@ the skin's stress across the cut (the tension the cut released: low at the
 lips, raised at the cut's ends), the planned cut (dashed) and the opened
 lips; below, the gap against the pre-tension as it comes on. For an
 excision (Incision/Shape = disc) one panel: the von Mises stress, the
-planned disc and the wound's rim; below, the wound's area change.
+planned disc and the wound's rim; below, the wound's area change. For an
+ellipse excised along x and along y, one panel each: the planned ellipse,
+the opened wound's rim and, where sutures closed it (Incision/Closure), the
+skin's von Mises stress in the closed state with the sutures' stations;
+below, the force per suture as the closure proceeds (or the area change).
 
     /usr/bin/python3 scripts/plot_incision.py RUN_DIR [HALF_WIDTH_MM]
 
@@ -59,9 +63,15 @@ def main():
     table = np.genfromtxt(os.path.join(folder, "wound.csv"), delimiter=",",
                           names=True, dtype=None, encoding="utf-8")
     disc = "excision" in wound or "planned_diameter_mm" in wound
+    ellipse = "ellipse_along_x" in wound
+    closure = summary.get("closure")
     if disc:
         panels = [(1, "disc", wound)]
         length = wound["planned_diameter_mm"]
+    elif ellipse:
+        panels = [(1, "x", wound["ellipse_along_x"]),
+                  (2, "y", wound["ellipse_along_y"])]
+        length = wound["ellipse_along_x"]["planned_length_mm"]
     else:
         panels = [(1, "x", wound["cut_along_x"]), (2, "y", wound["cut_along_y"])]
         length = wound["cut_along_x"]["planned_length_mm"]
@@ -73,10 +83,11 @@ def main():
     for step, name, entry in panels:
         ax = fig.add_subplot(grid[0, step - 1])
         faces, stress = skin_surface(folder, step)
-        if disc:
+        if disc or ellipse:
             # deviatoric: Q1-P0's mean stress shows its pressure checkerboard
             shown = stress["von_mises"] * 1e3
-            label = "skin von Mises stress (kPa)"
+            label = "skin von Mises stress (kPa)" + (
+                ", closed" if closure else "")
         else:
             shown = stress["stress_yy" if name == "x" else "stress_xx"] * 1e3
             label = "skin stress across the cut (kPa)"
@@ -88,13 +99,44 @@ def main():
         if disc:
             angle = np.linspace(0, 2 * np.pi, 200)
             plan = length / 2 * np.stack([np.cos(angle), np.sin(angle)], 1)
+        elif ellipse:
+            angle = np.linspace(0, 2 * np.pi, 200)
+            semi = [length / 2, entry["planned_width_mm"] / 2]
+            if name == "y":
+                semi = semi[::-1]
+            plan = np.stack([semi[0] * np.cos(angle),
+                             semi[1] * np.sin(angle)], 1)
         else:
             plan = np.array([[-length / 2, 0], [length / 2, 0]])
             if name == "y":
                 plan = plan[:, ::-1]
         ax.plot(plan[:, 0], plan[:, 1], "k--", lw=1,
-                label="planned " + ("disc" if disc else "cut"))
-        if disc:
+                label="planned " + ("disc" if disc else "ellipse"
+                                    if ellipse else "cut"))
+        if ellipse:
+            rim = lips[lips["cut"] == name]
+            order = np.argsort(rim["t"])
+            ax.plot(np.append(rim["x"][order], rim["x"][order][0]),
+                    np.append(rim["y"][order], rim["y"][order][0]), "r-",
+                    lw=1.2, label="opened wound")
+            where = entry.get("relative_to_langer_lines")
+            title = (f"ellipse along {name}" +
+                     (f" ({where} Langer's lines)" if where else "") +
+                     f": opened {entry['area_change_pct']:+.3g} % area")
+            if closure:
+                closed = closure[f"ellipse_along_{name}"]
+                stations = np.array(closed["suture_stations_mm"])
+                points = np.stack([stations, 0 * stations], 1)
+                if name == "y":
+                    points = points[:, ::-1]
+                ax.plot(points[:, 0], points[:, 1], "wx", ms=6, mew=1.5,
+                        label="sutures (closed)")
+                title += (f"\nclosed: {closed['force_per_suture_N']:.3g} N "
+                          f"per suture, dog ears "
+                          f"{closed['dog_ear_height_mm']:.2g} mm,\nskin "
+                          f"stress up to {closed['max_skin_stress_kPa']:.3g}"
+                          " kPa")
+        elif disc:
             rim = lips[lips["cut"] == "disc"]
             order = np.argsort(rim["t"])
             ax.plot(np.append(rim["x"][order], rim["x"][order][0]),
@@ -123,9 +165,26 @@ def main():
         ax.set_ylabel("y (mm)")
         ax.legend(loc="lower right", fontsize=8)
     ax = fig.add_subplot(grid[1, :])
-    for _, name, _ in panels:
+    if closure:
+        steps = np.genfromtxt(os.path.join(folder, "closure.csv"),
+                              delimiter=",", names=True, dtype=None,
+                              encoding="utf-8")
+    for _, name, entry in panels:
         rows = table[table["cut"] == name]
-        if disc:
+        if closure:
+            mine = steps[steps["cut"] == name]
+            where = entry.get("relative_to_langer_lines")
+            ax.plot(np.append(0, 100 * mine["closure_fraction"]),
+                    np.append(0, mine["force_per_suture_N"]),
+                    "o-" if name == "x" else "s--",
+                    label=f"ellipse along {name}" +
+                    (f" ({where} Langer's lines)" if where else ""))
+        elif ellipse:
+            ax.plot(100 * rows["prestretch_fraction"],
+                    100 * (rows["area_mm2"] / entry["planned_area_mm2"] - 1),
+                    "o-" if name == "x" else "s--",
+                    label=f"ellipse along {name}")
+        elif disc:
             planned = wound["planned_area_mm2"]
             ax.plot(100 * rows["prestretch_fraction"],
                     100 * (rows["area_mm2"] / planned - 1), "o-",
@@ -134,14 +193,22 @@ def main():
             ax.plot(100 * rows["prestretch_fraction"], rows["gap_mm"],
                     "o-" if name == "x" else "s--", label=f"cut along {name}")
     tension = wound["skin_tension_N_per_m"]
-    ax.set_xlabel("pre-tension applied (% of the prestretch; full: "
-                  f"{tension['x']:.3g} / {tension['y']:.3g} N/m along x / y)")
-    ax.set_ylabel("wound area change (%)" if disc else "gap (mm)")
+    if closure:
+        ax.set_xlabel("closure (% of the lips' distance drawn together; "
+                      f"skin tension {tension['x']:.3g} / {tension['y']:.3g} "
+                      "N/m along x / y)")
+        ax.set_ylabel("force per suture (N)")
+    else:
+        ax.set_xlabel("pre-tension applied (% of the prestretch; full: "
+                      f"{tension['x']:.3g} / {tension['y']:.3g} N/m along "
+                      "x / y)")
+        ax.set_ylabel("wound area change (%)" if disc or ellipse else
+                      "gap (mm)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    fig.suptitle(f"{summary['run']}: "
-                 f"{'excision' if disc else 'incision'} of the pre-tensioned "
-                 "skin")
+    kind = ("closure of an elliptic excision" if closure else "excision"
+            if disc or ellipse else "incision")
+    fig.suptitle(f"{summary['run']}: {kind} of the pre-tensioned skin")
     fig.savefig(run_manifest.record(folder, "incision.png"), dpi=130)
 
 

@@ -78,10 +78,12 @@ namespace ssc
 
 
   void
-  BoundaryConstraints::setup(const std::vector<DirichletCondition> &conditions,
-                             const std::vector<TiedCondition>      &ties)
+  BoundaryConstraints::setup(
+    const std::vector<DirichletCondition> &conditions,
+    const std::vector<TiedCondition>      &ties,
+    const std::vector<std::pair<types::global_dof_index, unsigned int>> &extra)
   {
-    find_relevant_dofs(ties);
+    find_relevant_dofs(ties, extra);
 
     hanging_node_constraints.clear();
     hanging_node_constraints.reinit(relevant);
@@ -111,7 +113,8 @@ namespace ssc
 
   void
   BoundaryConstraints::find_relevant_dofs(
-    const std::vector<TiedCondition> &ties)
+    const std::vector<TiedCondition>                                    &ties,
+    const std::vector<std::pair<types::global_dof_index, unsigned int>> &extra)
   {
     // The master of each tie, made locally relevant everywhere so that
     // every rank can resolve u_i = u_master.
@@ -122,6 +125,8 @@ namespace ssc
         tie_masters.push_back(find_master(tie));
         relevant.add_index(tie_masters.back());
       }
+    for (const auto &[dof, component] : extra)
+      relevant.add_index(dof);
     relevant.compress();
     relevant_components.assign(relevant.n_elements(), 0);
     const FiniteElement<3>              &fe = field.fe();
@@ -134,7 +139,9 @@ namespace ssc
             relevant_components[relevant.index_within_set(dofs[i])] =
               fe.system_to_component_index(i).first;
         }
-    // a master may lie on cells this rank does not see
+    // a master or an extra dof may lie on cells this rank does not see
+    for (const auto &[dof, component] : extra)
+      relevant_components[relevant.index_within_set(dof)] = component;
     for (unsigned int t = 0; t < ties.size(); ++t)
       relevant_components[relevant.index_within_set(tie_masters[t])] =
         ties[t].component;

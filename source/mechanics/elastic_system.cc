@@ -112,7 +112,11 @@ namespace ssc
   ElasticSystem::setup(const std::vector<DirichletCondition> &conditions,
                        const std::vector<TiedCondition>      &ties)
   {
-    boundary_constraints.setup(conditions, ties);
+    std::vector<std::pair<types::global_dof_index, unsigned int>> extra;
+    for (const DofContribution *contribution : dof_contributions)
+      for (const auto &dof : contribution->extra_relevant_dofs())
+        extra.push_back(dof);
+    boundary_constraints.setup(conditions, ties, extra);
     std::vector<unsigned int> n_history_variables;
     for (unsigned int m = 0; m < layer_materials.size(); ++m)
       n_history_variables.push_back(layer_materials[m].n_history_variables());

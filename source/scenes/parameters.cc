@@ -267,9 +267,10 @@ namespace ssc
                                   "Fitted circle radius = half of "
                                   "Incision/Length." :
                                   "The incision scene cuts along the "
-                                  "straight mesh lines of the whole patch: "
-                                  "Mesh/Layout = box, Symmetry = none, no "
-                                  "Fitted circle radius."));
+                                  "mesh lines of the whole patch (an "
+                                  "ellipse's own map bends them onto its "
+                                  "rim): Mesh/Layout = box, Symmetry = "
+                                  "none, no Fitted circle radius."));
     AssertThrow(layer_laws.any_prestretch(),
                 ExcMessage("The incision scene opens the wound with the "
                            "skin's pre-tension, but no layer has one: set "

@@ -64,13 +64,18 @@ namespace ssc
 
     /// Builds the constraints; Dirichlet conditions first claim their dofs
     /// (the first one that claims a dof wins), then the ties. Their
-    /// reactions are numbered in that order (conditions, then ties).
+    /// reactions are numbered in that order (conditions, then ties). The
+    /// dofs of @p extra (with their components) are made locally relevant
+    /// too (see DofContribution::extra_relevant_dofs()).
     void
     setup(const std::vector<DirichletCondition> &conditions,
-          const std::vector<TiedCondition>      &ties);
+          const std::vector<TiedCondition>      &ties,
+          const std::vector<std::pair<types::global_dof_index, unsigned int>>
+            &extra = {});
 
-    /// The mesh's locally relevant dofs and the masters of the ties, which
-    /// every rank needs to resolve u_i = u_master.
+    /// The mesh's locally relevant dofs, the masters of the ties, which
+    /// every rank needs to resolve u_i = u_master, and the extra ones of
+    /// setup().
     const IndexSet &
     relevant_dofs() const
     {
@@ -152,10 +157,13 @@ namespace ssc
     types::global_dof_index
     find_master(const TiedCondition &tie) const;
 
-    /// Finds the ties' masters, the locally relevant dofs and their
-    /// components.
+    /// Finds the ties' masters, the locally relevant dofs (with @p extra)
+    /// and their components.
     void
-    find_relevant_dofs(const std::vector<TiedCondition> &ties);
+    find_relevant_dofs(
+      const std::vector<TiedCondition> &ties,
+      const std::vector<std::pair<types::global_dof_index, unsigned int>>
+        &extra);
 
     /// Adds the Dirichlet conditions to the prescribed constraints and
     /// records their dofs and values (the first that claims a dof wins).

@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace ssc
@@ -32,6 +33,16 @@ namespace ssc
                          const Vector<double> &)>;
 
     virtual ~DofContribution() = default;
+
+    /// Dofs beyond the mesh's locally relevant ones that this contribution
+    /// reads or writes on this rank, with their displacement components
+    /// (e.g. the two ends of a tie across a wound, which no cell shares).
+    /// ElasticSystem::setup() makes them locally relevant. None by default.
+    virtual std::vector<std::pair<types::global_dof_index, unsigned int>>
+    extra_relevant_dofs() const
+    {
+      return {};
+    }
 
     /// The dof groups that may form a block (those of this rank), for the
     /// sparsity pattern; called once the dofs and ties exist.

@@ -77,6 +77,12 @@ namespace ssc
       return growth_field;
     }
 
+    const GrowthField &
+    growth() const
+    {
+      return growth_field;
+    }
+
     const LayerMaterials &
     materials() const
     {

@@ -20,12 +20,19 @@ namespace ssc
    * named along or across them, and the ratio of their gaps is reported.
    * With Incision/Shape = disc, a disc of the top layers is excised instead
    * (one model): the wound's area change, aspect ratio and orientation,
-   * and the area change of the freed disc ("disc").
+   * and the area change of the freed disc ("disc"). With Shape = ellipse,
+   * an ellipse is excised with its long axis along x and along y (two
+   * models); with Incision/Closure/Suture spacing > 0, sutures
+   * (SutureTies, find_sutures()) then draw the opened wound's lips
+   * together in load steps: each suture's force, the skin's largest
+   * stress and the dog ears' height (ClosureState, "closure").
    *
-   * Writes into output/<run name>/: summary.json (key "wound"), wound.csv
-   * (per cut and step), wound_lips.csv (the lips' outlines at full
-   * pre-tension), volume.pvd (the two cut models at full pre-tension, steps
-   * 1 and 2), parameters.prm, log.txt.
+   * Writes into output/<run name>/: summary.json (keys "wound", "disc",
+   * "closure"), wound.csv (per cut and step), wound_lips.csv (the lips'
+   * outlines at full pre-tension), closure.csv (per ellipse and suture
+   * step), volume.pvd (the models at the end, steps 1 and 2: closed where
+   * sutured), parameters.prm, log.txt. WoundRecord keeps the tables and
+   * the summary.
    */
   class IncisionScene : public Scene
   {
