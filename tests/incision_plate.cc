@@ -21,95 +21,28 @@
 // (1 + nu) sigma a / E (Lame), so that its area grows by (1 + u_r / a)^2 -
 // 1, within 1 % on 0.25 mm cells, and the hole stays round.
 
-#include <deal.II/base/function.h>
-
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
-#include <ssc/mechanics/elastic_system.h>
-#include <ssc/mesh/background_mesh.h>
-#include <ssc/nonlinear/elastic_problem.h>
-#include <ssc/nonlinear/load_stepping.h>
-#include <ssc/nonlinear/newton_solver.h>
-#include <ssc/scenes/wound.h>
-
-#include "quiet_elasticity.h"
+#include "pretensioned_plate.h"
 #include "tests.h"
 
 using namespace dealii;
 
 namespace
 {
-  constexpr double E = 1, nu = 0.3, s = 1.001, a = 4, width = 640;
+  using pretensioned_plate::E;
+  using pretensioned_plate::nu;
+  constexpr double s = 1.001, a = 4, width = 640;
 
   /// The wound of the plate with cells of @p h mm along the cut, or of
   /// the hole of diameter 2a with @p hole.
   ssc::WoundShape
   cut_plate(const double h, const bool hole = false)
   {
-    ssc::LayerStack layers;
-    layers.add_layer("plate", ssc::LayerKind::skin, "1", E, nu, 1);
-    layers.set_model(0, "neo-Hookean");
-    layers.set_prestretch(0, s);
-    ssc::MeshParameters mesh_parameters;
-    mesh_parameters.patch_length_x  = width;
-    mesh_parameters.patch_length_y  = width;
-    mesh_parameters.cell_size       = h;
-    mesh_parameters.core_half_width = hole ? 2 * a : 6;
-    mesh_parameters.grading_ratio   = 1.25;
-    ssc::Incision incision;
-    incision.length       = 2 * a;
-    incision.direction    = 1;
-    incision.n_cut_layers = 1;
-    if (hole)
-      {
-        incision.shape                       = ssc::Incision::Shape::disc;
-        mesh_parameters.fitted_circle_radius = a;
-      }
-    ssc::BackgroundMesh mesh(layers,
-                             mesh_parameters,
-                             MPI_COMM_WORLD,
-                             ssc::ResourceLimits(),
-                             false,
-                             incision);
-    mesh.build();
-
-    ssc::ElasticityParameters parameters;
-    parameters.linear_solver.preconditioner =
-      ssc::DisplacementPreconditioner::ldlt;
-    parameters.linear_solver.tolerance = 1e-12;
-    QuietElasticity     quiet(mesh, layers, parameters);
-    ssc::ElasticSystem &plate = quiet.elasticity;
-    plate.field().distribute_dofs();
-    const auto zero = std::make_shared<Functions::ZeroFunction<3>>(3);
-    std::vector<ssc::DirichletCondition> rollers;
-    for (const unsigned int d : {0u, 1u, 2u})
-      {
-        ComponentMask component(3, false);
-        component.set(d, true);
-        rollers.push_back(
-          {static_cast<types::boundary_id>(2 * d), component, zero, {}});
-        if (d < 2)
-          rollers.push_back(
-            {static_cast<types::boundary_id>(2 * d + 1), component, zero, {}});
-      }
-    plate.setup(rollers);
-
-    ssc::NewtonParameters newton_parameters;
-    newton_parameters.relative_tolerance = 1e-10;
-    ssc::ElasticProblem problem(plate);
-    ssc::NewtonSolver   newton(problem, newton_parameters, quiet.pcout, false);
-    ssc::LoadStepper    stepper(newton);
-    double              increment = 1;
-    stepper.follow(
-      0.,
-      1.,
-      increment,
-      [&plate](const double f) { plate.set_prestretch_fraction(f); },
-      ssc::LoadDependence::tangent);
-    return ssc::measure_wound(plate.field(), incision);
+    return pretensioned_plate::cut_plate(h, hole, s, a, width);
   }
 } // namespace
 
