@@ -19,7 +19,7 @@ Variants (one ssc run each, one MPI rank, Cholesky; no fields):
   recruited at the prestretch (slack in vivo, engaged by the closure): the
   ellipse along x lies across the lines, the one along y along them. On
   the scene itself (prestretch 1.2) its Newton iterations crawl through
-  trust-region steps (47 iterations into the first closure step after 12
+  trust-region steps (a quarter of the first ellipse's closure in 12
   minutes, stopped 2026-12-07), so it runs on the small closure test's
   model (tests/closure_small.prm: a 6 x 2 mm ellipse on a 20 mm patch,
   prestretch 1.1, fibres recruited at 1.1, three sutures 1.5 mm apart).
