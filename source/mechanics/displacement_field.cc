@@ -52,6 +52,20 @@ namespace ssc
   }
 
 
+  std::array<types::global_dof_index, 3>
+  DisplacementField::vertex_dofs(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const unsigned int                         v) const
+  {
+    std::array<types::global_dof_index, 3> result;
+    const unsigned int n = finite_element.n_dofs_per_vertex();
+    for (unsigned int i = 0; i < n; ++i)
+      result[finite_element.system_to_component_index(v * n + i).first] =
+        cell->vertex_dof_index(v, i);
+    return result;
+  }
+
+
   TrilinosWrappers::MPI::Vector
   DisplacementField::owned_solution() const
   {

@@ -35,7 +35,6 @@ namespace ssc
     std::vector<WallFace>
     skin_wall_faces(const DisplacementField &field, const Incision &incision)
     {
-      const FESystem<3> &fe                      = field.fe();
       const unsigned int along                   = incision.direction,
                          across                  = incision.normal_direction();
       constexpr unsigned int                size = 4 + 4 * 6;
@@ -60,13 +59,12 @@ namespace ssc
                     const Point<3> X = cell->vertex(v);
                     entry[1]         = std::min(entry[1], X[along]);
                     entry[2]         = std::max(entry[2], X[along]);
+                    const auto dofs  = field.vertex_dofs(cell, v);
                     for (unsigned int d = 0; d < 3; ++d)
-                      entry[4 + 6 * k + d] = X[d];
-                    for (unsigned int i = 0; i < fe.n_dofs_per_vertex(); ++i)
-                      entry[4 + 6 * k + 3 +
-                            fe.system_to_component_index(
-                                v * fe.n_dofs_per_vertex() + i)
-                              .first] = cell->vertex_dof_index(v, i);
+                      {
+                        entry[4 + 6 * k + d]     = X[d];
+                        entry[4 + 6 * k + 3 + d] = dofs[d];
+                      }
                   }
                 local.push_back(entry);
               }
@@ -248,7 +246,6 @@ namespace ssc
     // the skin's stress and the surface's rise, on the locally owned cells
     const std::vector<SymmetricTensor<2, 3>> stresses =
       cell_cauchy_stresses(field, system.materials(), system.growth());
-    const FESystem<3>    &fe     = field.fe();
     double                stress = 0, rise = 0;
     std::array<double, 2> stress_at = {{0, 0}}, rise_at = {{0, 0}};
     for (const auto &cell : field.dof_handler().active_cell_iterators())
@@ -263,19 +260,16 @@ namespace ssc
             }
           for (const unsigned int v : cell->vertex_indices())
             if (std::abs(cell->vertex(v)[2]) < 1e-12)
-              for (unsigned int i = 0; i < fe.n_dofs_per_vertex(); ++i)
-                if (fe.system_to_component_index(v * fe.n_dofs_per_vertex() + i)
-                      .first == 2)
+              {
+                const types::global_dof_index dof =
+                  field.vertex_dofs(cell, v)[2];
+                const double dz = solution[dof] - before[dof];
+                if (dz > rise)
                   {
-                    const types::global_dof_index dof =
-                      cell->vertex_dof_index(v, i);
-                    const double dz = solution[dof] - before[dof];
-                    if (dz > rise)
-                      {
-                        rise    = dz;
-                        rise_at = {{cell->vertex(v)[0], cell->vertex(v)[1]}};
-                      }
+                    rise    = dz;
+                    rise_at = {{cell->vertex(v)[0], cell->vertex(v)[1]}};
                   }
+              }
         }
     const auto max_stress = max_with_position(stress, stress_at, communicator);
     const auto max_rise   = max_with_position(rise, rise_at, communicator);

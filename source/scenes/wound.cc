@@ -151,7 +151,6 @@ namespace ssc
     const auto         semi                       = incision.semi_axes();
     const unsigned int along                      = incision.direction,
                        across                     = incision.normal_direction();
-    const FESystem<3>                   &fe       = field.fe();
     const TrilinosWrappers::MPI::Vector &solution = field.solution();
     const double tolerance = 1e-9 * (1. + incision.length);
 
@@ -176,10 +175,10 @@ namespace ssc
                   (disc ? std::abs(r - 1.) > tolerance / incision.length :
                           std::abs(X[across]) > tolerance))
                 continue;
-              Point<3> x = X;
-              for (unsigned int i = 0; i < fe.n_dofs_per_vertex(); ++i)
-                x[fe.system_to_component_index(v * fe.n_dofs_per_vertex() + i)
-                    .first] += solution(cell->vertex_dof_index(v, i));
+              const auto dofs = field.vertex_dofs(cell, v);
+              Point<3>   x    = X;
+              for (unsigned int d = 0; d < 3; ++d)
+                x[d] += solution(dofs[d]);
               local.push_back({{double(side),
                                 disc ? std::atan2(X[1], X[0]) : X[along],
                                 x[0],

@@ -14,6 +14,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -95,6 +96,11 @@ namespace ssc
     {
       return ghosted_solution;
     }
+
+    /// The dofs of vertex @p v of @p cell, by displacement component.
+    std::array<types::global_dof_index, 3>
+    vertex_dofs(const DoFHandler<3>::active_cell_iterator &cell,
+                const unsigned int                         v) const;
 
     /// A copy of the locally owned entries of the solution.
     TrilinosWrappers::MPI::Vector
