@@ -1,5 +1,6 @@
 #include <ssc/materials/layer_materials.h>
 #include <ssc/materials/prestretched_material.h>
+#include <ssc/materials/viscoelastic_material.h>
 
 namespace ssc
 {
@@ -88,6 +89,22 @@ namespace ssc
     auto law =
       entry.make_law(IsotropicModuli(layer.youngs_modulus, layer.poisson_ratio),
                      laws.of(layer.name, layer.material_model));
+    if (!layer.viscoelasticity.empty())
+      {
+        const std::string path = "Layer stack/" + layer.name + "/";
+        AssertThrow(
+          law->kinematics() == Kinematics::finite_strain,
+          ExcMessage(path + "Viscoelasticity needs a finite-strain law: '" +
+                     layer.material_model + "' is assembled at small strain."));
+        AssertThrow(layer.prestretch == 1.,
+                    ExcMessage(path + "Viscoelasticity and " + path +
+                               "Prestretch cannot be combined yet: the "
+                               "history starts stress-free, so the in vivo "
+                               "pre-tension would relax over time."));
+        layer.viscoelasticity.check(path + "Viscoelasticity/");
+        return std::make_unique<ViscoelasticMaterial>(std::move(law),
+                                                      layer.viscoelasticity);
+      }
     if (layer.prestretch == 1.)
       return law;
     AssertThrow(law->kinematics() == Kinematics::finite_strain,

@@ -1,3 +1,5 @@
+#include <utility>
+
 #include <ssc/materials/quadrature_history.h>
 
 namespace ssc
@@ -51,10 +53,28 @@ namespace ssc
   }
 
 
+  std::vector<MaterialPointHistory>
+  QuadratureHistory::points(const CellIterator &cell)
+  {
+    const auto stored = storage.try_get_data(cell);
+    Assert(stored, ExcMessage("This cell keeps no history."));
+    std::vector<MaterialPointHistory> views;
+    views.reserve(stored->size());
+    for (const auto &point : *stored)
+      views.push_back({make_array_view(std::as_const(point->committed)),
+                       make_array_view(point->trial),
+                       time_step});
+    return views;
+  }
+
+
   void
   QuadratureHistory::accept()
   {
     copy_all(true);
+    // until the next step sets its length, an assembly (reactions, output)
+    // evaluates the accepted state itself, not a further relaxation
+    time_step = 0;
   }
 
 

@@ -27,7 +27,7 @@ namespace ssc
                    mesh.mapping_degree(parameters.degree))
     , boundary_constraints(displacement)
     , growth_field(QGauss<3>(parameters.degree + 1))
-    , kernel(layer_materials, parameters, growth_field)
+    , kernel(layer_materials, parameters, growth_field, history)
     , assembler(displacement, kernel)
     , tangent(parameters, displacement, boundary_constraints, timer, progress)
   {}
@@ -54,8 +54,14 @@ namespace ssc
     bool accepted = true;
     for (DofContribution *contribution : dof_contributions)
       accepted = contribution->accept(displacement.solution()) && accepted;
-    if (accepted)
-      history.accept();
+    if (accepted && !history.empty())
+      {
+        // the last assembly may have been at a rejected trial state (line
+        // search, trust region): the history to commit is the one of the
+        // accepted state, which a residual assembly writes
+        nodal_residual();
+        history.accept();
+      }
     return accepted;
   }
 

@@ -24,10 +24,12 @@ namespace ssc
 
   FiniteStrainKernel::FiniteStrainKernel(const ElasticityParameters &parameters,
                                          const LayerMaterials       &materials,
-                                         const GrowthField          &growth)
+                                         const GrowthField          &growth,
+                                         QuadratureHistory          &history)
     : parameters(parameters)
     , materials(materials)
     , growth(growth)
+    , history(history)
   {}
 
 
@@ -169,11 +171,14 @@ namespace ssc
         base[i]               = alpha;
         dof_of[alpha][c]      = i;
       }
-    std::vector<Tensor<1, 3>> g(n_base); // spatial shape gradients
-    std::vector<Tensor<3, 3>> W(n_base);
-    SymmetricTensor<2, 3>     tau;
-    Tensor<4, 3>              T;
-    Vector<double>            force(3);
+    std::vector<Tensor<1, 3>>         g(n_base); // spatial shape gradients
+    std::vector<Tensor<3, 3>>         W(n_base);
+    SymmetricTensor<2, 3>             tau;
+    Tensor<4, 3>                      T;
+    Vector<double>                    force(3);
+    std::vector<MaterialPointHistory> point_history;
+    if (material.n_history_variables() > 0)
+      point_history = history.points(cell);
     for (unsigned int q = 0; q < n_q; ++q)
       {
         const double       JxW   = fe_values.JxW(q);
@@ -184,13 +189,20 @@ namespace ssc
         // tangent scaled by gamma; the volumetric part sees J_e = J / gamma.
         const Tensor<2, 3> F_e = elastic_part(F[q], gamma[q]);
         const Point<3>    &X   = fe_values.quadrature_point(q);
-        if (with_matrix)
+        if (!point_history.empty())
           {
-            material.isochoric_response(X, F_e, tau, T);
-            T *= gamma[q];
+            if (with_matrix)
+              material.isochoric_response_in_step(
+                X, F_e, point_history[q], tau, T);
+            else
+              tau = material.isochoric_stress_in_step(X, F_e, point_history[q]);
           }
+        else if (with_matrix)
+          material.isochoric_response(X, F_e, tau, T);
         else
           tau = material.isochoric_stress(X, F_e);
+        if (with_matrix)
+          T *= gamma[q];
         tau *= gamma[q];
         const double J_e = J / gamma[q];
         double       p   = beta * volumetric.pressure(J_e);

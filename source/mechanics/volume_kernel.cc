@@ -4,11 +4,12 @@ namespace ssc
 {
   VolumeKernel::VolumeKernel(const LayerMaterials       &materials,
                              const ElasticityParameters &parameters,
-                             const GrowthField          &growth)
+                             const GrowthField          &growth,
+                             QuadratureHistory          &history)
     : materials(materials)
     , cell_quadrature(parameters.degree + 1)
     , small_strain(parameters, cell_quadrature, materials, growth)
-    , finite_strain(parameters, materials, growth)
+    , finite_strain(parameters, materials, growth, history)
   {
     AssertThrow(growth.n_points() == cell_quadrature.size(),
                 ExcMessage("The growth field must be sampled at the "

@@ -180,6 +180,30 @@ namespace ssc
           "39:1935), a prestretch of about 1.2 in porcine skin (Buganza "
           "Tepole et al. 2015). Finite-strain laws only.",
           Patterns::Double(0.5, 2.));
+        prm.enter_subsection("Viscoelasticity");
+        prm.add_parameter(
+          "Relative moduli",
+          layer.viscoelasticity.relative_moduli,
+          "The deviatoric Prony series of a visco-elastic layer: the "
+          "fractions g_i of the instantaneous shear modulus (E and nu above) "
+          "that relax with the times below, g(t) = 1 - sum g_i (1 - "
+          "exp(-t/tau_i)); each in (0, 1), their sum below 1. Empty: "
+          "elastic. Porcine subdermal fat: one term, 0.39 +- 0.03 (Sims et "
+          "al. 2010, Biomech Model Mechanobiol 9:703); in vivo lower-limb "
+          "soft tissue (quasi-linear): 0.03-0.28 (Zheng & Mak 1999, J "
+          "Biomech Eng 121:330). Finite-strain laws only; the volumetric "
+          "energy stays elastic.",
+          Patterns::List(Patterns::Double(), 0, 100, ","));
+        prm.add_parameter(
+          "Relaxation times",
+          layer.viscoelasticity.relaxation_times,
+          "The relaxation times tau_i (s) of the Prony terms, one per "
+          "relative modulus, each positive. Porcine subdermal fat: 700 +- "
+          "255 s (Sims et al. 2010); in vivo lower limb: 0.05-8.9 s (Zheng & "
+          "Mak 1999). A load step without time (every scene but a "
+          "time-dependent one) sees the instantaneous response.",
+          Patterns::List(Patterns::Double(), 0, 100, ","));
+        prm.leave_subsection();
         prm.add_parameter(
           "Material model",
           layer.material_model,
@@ -251,6 +275,7 @@ namespace ssc
         AssertThrow(layer.given_youngs_modulus > 0.,
                     ExcMessage(path +
                                "Young's modulus must be positive (MPa)."));
+        layer.viscoelasticity.check(path + "Viscoelasticity/");
         layer.youngs_modulus =
           layer.given_youngs_modulus *
           (layer.kind == LayerKind::skin ? skin_modulus_factor : 1.);

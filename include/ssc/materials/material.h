@@ -1,6 +1,7 @@
 #ifndef ssc_materials_material_h
 #define ssc_materials_material_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
@@ -22,6 +23,21 @@ namespace ssc
     /// a function of the deformation gradient F (finite strain)
     finite_strain
   };
+
+  /**
+   * What a law with history (Material::n_history_variables() > 0) sees at
+   * its material point while a load or time step is solved: the values of
+   * the last accepted step, where to write this step's values, and the
+   * step's length in time (s; 0 for a load step without time: the law
+   * answers instantly). The mechanics keeps both copies (QuadratureHistory).
+   */
+  struct MaterialPointHistory
+  {
+    ArrayView<const double> committed;
+    ArrayView<double>       trial;
+    double                  time_step = 0;
+  };
+
 
   /**
    * The constitutive law of one layer: stress and consistent tangent from
@@ -102,6 +118,32 @@ namespace ssc
     /// of a Newton iteration's assemblies).
     virtual SymmetricTensor<2, 3>
     isochoric_stress(const Point<3> &X, const Tensor<2, 3> &F) const;
+
+    /// isochoric_response() of a law with history at the end of a step:
+    /// reads @p history.committed, writes @p history.trial (the values the
+    /// step would commit at this F). The kernel calls it for the laws with
+    /// history only; by default the elastic response.
+    virtual void
+    isochoric_response_in_step(const Point<3>        &X,
+                               const Tensor<2, 3>    &F,
+                               MaterialPointHistory  &history,
+                               SymmetricTensor<2, 3> &tau,
+                               Tensor<4, 3>          &tangent) const
+    {
+      (void)history;
+      isochoric_response(X, F, tau, tangent);
+    }
+
+    /// isochoric_stress() of a law with history at the end of a step (see
+    /// isochoric_response_in_step()).
+    virtual SymmetricTensor<2, 3>
+    isochoric_stress_in_step(const Point<3>       &X,
+                             const Tensor<2, 3>   &F,
+                             MaterialPointHistory &history) const
+    {
+      (void)history;
+      return isochoric_stress(X, F);
+    }
 
     /// Strain energy per unit reference volume at @p F at @p X: the
     /// isochoric part plus U(J).

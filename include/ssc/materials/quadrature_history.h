@@ -9,6 +9,8 @@
 
 #include <vector>
 
+#include <ssc/materials/material.h>
+
 namespace ssc
 {
   using namespace dealii;
@@ -54,8 +56,31 @@ namespace ssc
     ArrayView<const double>
     committed(const CellIterator &cell, const unsigned int q) const;
 
+    /// What the law at each quadrature point of @p cell (which must keep
+    /// history) sees in the current step: both copies and the step's
+    /// length in time. One lookup per cell, for the assembly.
+    std::vector<MaterialPointHistory>
+    points(const CellIterator &cell);
+
+    /// The length in time (s) of the step being solved: 0 (the default)
+    /// for a load step without time, where the laws answer instantly. Set
+    /// it for every step: accept() resets it.
+    void
+    set_time_step(const double dt)
+    {
+      time_step = dt;
+    }
+
+    double
+    get_time_step() const
+    {
+      return time_step;
+    }
+
     /// The current step is accepted: its trial values become the
-    /// committed ones.
+    /// committed ones, and the time step goes back to 0, so that what is
+    /// assembled before the next step (reactions, output) is the accepted
+    /// state, not one relaxed by a further step.
     void
     accept();
 
@@ -77,6 +102,7 @@ namespace ssc
 
     CellDataStorage<CellIterator, PointHistory> storage;
     std::vector<CellIterator>                   cells;
+    double                                      time_step = 0;
   };
 } // namespace ssc
 

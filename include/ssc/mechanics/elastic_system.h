@@ -97,6 +97,23 @@ namespace ssc
       layer_materials.set_prestretch_fraction(f);
     }
 
+    /// The length in time (s) of the step solved next: the visco-elastic
+    /// layers relax over it (0, the default: a load step without time,
+    /// answered instantly). Set it with each step's load: accepting a step
+    /// resets it to 0.
+    void
+    set_time_step(const double dt)
+    {
+      history.set_time_step(dt);
+    }
+
+    /// Whether some layer's law keeps history (visco-elasticity).
+    bool
+    has_history() const
+    {
+      return !history.empty();
+    }
+
     /// Adds @p contribution (e.g. embedded septa) to every cell assembly
     /// from now on; it must outlive this object.
     void

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <ssc/materials/layer_materials.h>
+#include <ssc/materials/quadrature_history.h>
 #include <ssc/mechanics/cell_assembly_data.h>
 #include <ssc/mechanics/elasticity_parameters.h>
 #include <ssc/mechanics/growth_field.h>
@@ -39,10 +40,12 @@ namespace ssc
   {
   public:
     /// The kernel of the layers' laws @p materials, with the growth of
-    /// @p growth.
+    /// @p growth; the laws with history read and write theirs in
+    /// @p history (each cell its own points: safe in the threaded loop).
     FiniteStrainKernel(const ElasticityParameters &parameters,
                        const LayerMaterials       &materials,
-                       const GrowthField          &growth);
+                       const GrowthField          &growth,
+                       QuadratureHistory          &history);
 
     /// Residual into @p copy.residual and (if @p scratch.with_matrix)
     /// tangent into @p copy.matrix of @p cell (@p scratch.fe_values
@@ -100,6 +103,7 @@ namespace ssc
     const ElasticityParameters &parameters;
     const LayerMaterials       &materials;
     const GrowthField          &growth;
+    QuadratureHistory          &history;
   };
 } // namespace ssc
 

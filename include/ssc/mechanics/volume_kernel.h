@@ -26,7 +26,8 @@ namespace ssc
   public:
     VolumeKernel(const LayerMaterials       &materials,
                  const ElasticityParameters &parameters,
-                 const GrowthField          &growth);
+                 const GrowthField          &growth,
+                 QuadratureHistory          &history);
 
     /// The quadrature of the cell assembly (Gauss with p + 1 points).
     const Quadrature<3> &

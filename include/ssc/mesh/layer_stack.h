@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <ssc/base/enum_table.h>
+#include <ssc/materials/prony_series.h>
 
 namespace ssc
 {
@@ -73,6 +74,10 @@ namespace ssc
     /// stress-free one (1: none): the imaged geometry is pre-tensioned
     /// (PrestretchedMaterial).
     double prestretch = 1;
+    /// The deviatoric Prony series of a visco-elastic layer (empty:
+    /// elastic); E and nu are then the instantaneous moduli
+    /// (ViscoelasticMaterial).
+    PronySeries viscoelasticity;
 
     /// Whether this layer can carry lobules (kind SAT or DAT).
     bool
@@ -201,6 +206,13 @@ namespace ssc
     set_prestretch(const unsigned int i, const double prestretch)
     {
       layers[i].prestretch = prestretch;
+    }
+
+    /// Makes layer @p i visco-elastic with @p series (tests, benchmarks).
+    void
+    set_viscoelasticity(const unsigned int i, const PronySeries &series)
+    {
+      layers[i].viscoelasticity = series;
     }
 
     /// Adds a layer programmatically (tests, benchmarks).
