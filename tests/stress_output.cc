@@ -137,7 +137,8 @@ main(int argc, char **argv)
         }
       const auto stresses      = ssc::cell_cauchy_stresses(system.field(),
                                                       system.materials(),
-                                                      system.growth());
+                                                      system.growth(),
+                                                      system.history());
       double     largest_error = 0, scale = 0;
       for (const auto &cell : mesh.triangulation().active_cell_iterators())
         for (unsigned int i = 0; i < 3; ++i)

@@ -129,7 +129,9 @@ namespace
     ssc::LayerStack layers;
     layers.add_layer("block", ssc::LayerKind::SAT, "2", E_block, nu_block, 2);
     layers.set_model(0, "neo-Hookean");
-    layers.set_viscoelasticity(0, series);
+    layers.set_viscoelasticity(0,
+                               series.relative_moduli,
+                               series.relaxation_times);
     return layers;
   }
 
@@ -181,7 +183,7 @@ namespace
       {
         const double t = n * dt;
         elasticity.constraints().set_dirichlet_scale(s_max * ramp(t));
-        elasticity.set_time_step(dt);
+        elasticity.set_time(t);
         const ssc::NewtonReport report = newton.solve();
         AssertThrow(report.converged, ExcMessage(report.failure));
         AssertThrow(problem.accept_state(), ExcInternalError());

@@ -64,6 +64,7 @@ namespace ssc
         const Layer      &layer = layers.layer(l);
         const std::string path  = "Layer stack/" + layer.name + "/";
         MaterialRegistry::get(layer.material_model, path + "Material model");
+        prony_series(layer).check(path + "Viscoelasticity/");
         of(layer.name, layer.material_model).check(path + layer.material_model);
       }
   }
@@ -80,6 +81,13 @@ namespace ssc
   }
 
 
+  PronySeries
+  prony_series(const Layer &layer)
+  {
+    return {layer.relative_moduli, layer.relaxation_times};
+  }
+
+
   std::unique_ptr<Material>
   make_material(const Layer &layer, const LayerLawParameters &laws)
   {
@@ -89,7 +97,7 @@ namespace ssc
     auto law =
       entry.make_law(IsotropicModuli(layer.youngs_modulus, layer.poisson_ratio),
                      laws.of(layer.name, layer.material_model));
-    if (!layer.viscoelasticity.empty())
+    if (const PronySeries series = prony_series(layer); !series.empty())
       {
         const std::string path = "Layer stack/" + layer.name + "/";
         AssertThrow(
@@ -101,9 +109,8 @@ namespace ssc
                                "Prestretch cannot be combined yet: the "
                                "history starts stress-free, so the in vivo "
                                "pre-tension would relax over time."));
-        layer.viscoelasticity.check(path + "Viscoelasticity/");
-        return std::make_unique<ViscoelasticMaterial>(std::move(law),
-                                                      layer.viscoelasticity);
+        series.check(path + "Viscoelasticity/");
+        return std::make_unique<ViscoelasticMaterial>(std::move(law), series);
       }
     if (layer.prestretch == 1.)
       return law;

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <vector>
 
 #include <ssc/materials/material.h>
 
@@ -28,13 +29,41 @@ namespace ssc
   {
     // the energy gamma (W_iso(F_e) + U(J / gamma)) of growth F_g =
     // gamma^{1/3} I: tau = gamma tau_iso(F_e) + J U'(J / gamma) I
-    const double J = determinant(F);
+    return grown_cauchy_stress(isochoric_stress(X, elastic_part(F, gamma)),
+                               determinant(F),
+                               gamma);
+  }
+
+
+  SymmetricTensor<2, 3>
+  Material::grown_cauchy_stress(const SymmetricTensor<2, 3> &tau_iso,
+                                const double                 J,
+                                const double                 gamma) const
+  {
     Assert(J > 0, ExcMessage("Cauchy stress of an inverted state."));
-    const SymmetricTensor<2, 3> tau =
-      isochoric_stress(X, elastic_part(F, gamma));
-    return (gamma * tau + J * volumetric_energy.pressure(J / gamma) *
-                            unit_symmetric_tensor<3>()) /
+    return (gamma * tau_iso + J * volumetric_energy.pressure(J / gamma) *
+                                unit_symmetric_tensor<3>()) /
            J;
+  }
+
+
+  SymmetricTensor<2, 3>
+  Material::accepted_cauchy_stress(
+    const Point<3>                &X,
+    const Tensor<2, 3>            &F,
+    const double                   gamma,
+    const ArrayView<const double> &committed) const
+  {
+    if (n_history_variables() == 0)
+      return cauchy_stress(X, F, gamma);
+    // a step of no time from the accepted state: that state's stress
+    std::vector<double>  trial(n_history_variables());
+    MaterialPointHistory history{committed, make_array_view(trial), 0.};
+    return grown_cauchy_stress(isochoric_stress_in_step(X,
+                                                        elastic_part(F, gamma),
+                                                        history),
+                               determinant(F),
+                               gamma);
   }
 
 

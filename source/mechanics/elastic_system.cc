@@ -27,7 +27,7 @@ namespace ssc
                    mesh.mapping_degree(parameters.degree))
     , boundary_constraints(displacement)
     , growth_field(QGauss<3>(parameters.degree + 1))
-    , kernel(layer_materials, parameters, growth_field, history)
+    , kernel(layer_materials, parameters, growth_field, point_history)
     , assembler(displacement, kernel)
     , tangent(parameters, displacement, boundary_constraints, timer, progress)
   {}
@@ -54,13 +54,15 @@ namespace ssc
     bool accepted = true;
     for (DofContribution *contribution : dof_contributions)
       accepted = contribution->accept(displacement.solution()) && accepted;
-    if (accepted && !history.empty())
+    if (accepted)
+      accepted_time = solved_time;
+    if (accepted && !point_history.empty())
       {
         // the last assembly may have been at a rejected trial state (line
         // search, trust region): the history to commit is the one of the
         // accepted state, which a residual assembly writes
         nodal_residual();
-        history.accept();
+        point_history.accept();
       }
     return accepted;
   }
@@ -71,7 +73,7 @@ namespace ssc
   {
     for (DofContribution *contribution : dof_contributions)
       contribution->reject();
-    history.reject();
+    point_history.reject();
   }
 
 
@@ -126,9 +128,9 @@ namespace ssc
     std::vector<unsigned int> n_history_variables;
     for (unsigned int m = 0; m < layer_materials.size(); ++m)
       n_history_variables.push_back(layer_materials[m].n_history_variables());
-    history.initialize(displacement.dof_handler().get_triangulation(),
-                       n_history_variables,
-                       Utilities::pow(parameters.degree + 1, 3));
+    point_history.initialize(displacement.dof_handler().get_triangulation(),
+                             n_history_variables,
+                             Utilities::pow(parameters.degree + 1, 3));
     check_laws_at_quadrature_points();
     displacement.set_relevant_dofs(boundary_constraints.relevant_dofs());
     const IndexSet &owned = displacement.locally_owned_dofs();

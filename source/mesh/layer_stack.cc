@@ -183,7 +183,7 @@ namespace ssc
         prm.enter_subsection("Viscoelasticity");
         prm.add_parameter(
           "Relative moduli",
-          layer.viscoelasticity.relative_moduli,
+          layer.relative_moduli,
           "The deviatoric Prony series of a visco-elastic layer: the "
           "fractions g_i of the instantaneous shear modulus (E and nu above) "
           "that relax with the times below, g(t) = 1 - sum g_i (1 - "
@@ -196,7 +196,7 @@ namespace ssc
           Patterns::List(Patterns::Double(), 0, 100, ","));
         prm.add_parameter(
           "Relaxation times",
-          layer.viscoelasticity.relaxation_times,
+          layer.relaxation_times,
           "The relaxation times tau_i (s) of the Prony terms, one per "
           "relative modulus, each positive. Porcine subdermal fat: 700 +- "
           "255 s (Sims et al. 2010); in vivo lower limb: 0.05-8.9 s (Zheng & "
@@ -275,7 +275,6 @@ namespace ssc
         AssertThrow(layer.given_youngs_modulus > 0.,
                     ExcMessage(path +
                                "Young's modulus must be positive (MPa)."));
-        layer.viscoelasticity.check(path + "Viscoelasticity/");
         layer.youngs_modulus =
           layer.given_youngs_modulus *
           (layer.kind == LayerKind::skin ? skin_modulus_factor : 1.);

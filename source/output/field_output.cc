@@ -13,6 +13,7 @@ namespace ssc
     : field(system.field())
     , materials(system.materials())
     , growth(system.growth())
+    , history(system.history())
     , coupling(coupling)
     , kinematics(kinematics)
   {
@@ -74,7 +75,9 @@ namespace ssc
                      const double       time) const
   {
     output.add_pvd_record(
-      "volume", time, write_volume_vtu(field, materials, growth, output, step));
+      "volume",
+      time,
+      write_volume_vtu(field, materials, growth, history, output, step));
     if (septa_writer)
       write_family<2>(
         *septa_writer,

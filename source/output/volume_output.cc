@@ -13,7 +13,8 @@ namespace ssc
   std::vector<SymmetricTensor<2, 3>>
   cell_cauchy_stresses(const DisplacementField &field,
                        const LayerMaterials    &materials,
-                       const GrowthField       &growth)
+                       const GrowthField       &growth,
+                       const QuadratureHistory &history)
   {
     // the assembly's quadrature, at whose points the growth is known
     const QGauss<3> quadrature(field.fe().degree + 1);
@@ -49,9 +50,12 @@ namespace ssc
                   volume = std::numeric_limits<double>::quiet_NaN();
                   break;
                 }
-              sigma += law.cauchy_stress(fe_values.quadrature_point(q),
-                                         F,
-                                         1. + growth.at(cell, q)) *
+              const Point<3> &X     = fe_values.quadrature_point(q);
+              const double    gamma = 1. + growth.at(cell, q);
+              sigma += (law.n_history_variables() > 0 ?
+                          law.accepted_cauchy_stress(
+                            X, F, gamma, history.committed(cell, q)) :
+                          law.cauchy_stress(X, F, gamma)) *
                        J * fe_values.JxW(q);
               volume += J * fe_values.JxW(q);
             }
@@ -65,13 +69,14 @@ namespace ssc
   write_volume_vtu(const DisplacementField &field,
                    const LayerMaterials    &materials,
                    const GrowthField       &growth,
+                   const QuadratureHistory &history,
                    const RunOutput         &output,
                    const unsigned int       step)
   {
     const auto                              &tria    = field.triangulation();
     const unsigned int                       n_cells = tria.n_active_cells();
     const std::vector<SymmetricTensor<2, 3>> sigma =
-      cell_cauchy_stresses(field, materials, growth);
+      cell_cauchy_stresses(field, materials, growth, history);
     std::vector<Vector<float>> stress(6, Vector<float>(n_cells));
     Vector<float> mises(n_cells), layer(n_cells), subdomain(n_cells);
     static constexpr unsigned int index[6][2] = {

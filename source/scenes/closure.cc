@@ -244,8 +244,8 @@ namespace ssc
     state.residual_gap_mm = sutures.residual_gap(solution);
 
     // the skin's stress and the surface's rise, on the locally owned cells
-    const std::vector<SymmetricTensor<2, 3>> stresses =
-      cell_cauchy_stresses(field, system.materials(), system.growth());
+    const std::vector<SymmetricTensor<2, 3>> stresses = cell_cauchy_stresses(
+      field, system.materials(), system.growth(), system.history());
     double                stress = 0, rise = 0;
     std::array<double, 2> stress_at = {{0, 0}}, rise_at = {{0, 0}};
     for (const auto &cell : field.dof_handler().active_cell_iterators())

@@ -9,6 +9,7 @@
 #include <ssc/scenes/depth_error_estimator.h>
 #include <ssc/scenes/indentation_scene.h>
 #include <ssc/scenes/mechanics_model.h>
+#include <ssc/scenes/punch_hold.h>
 #include <ssc/scenes/punch_loading.h>
 #include <ssc/scenes/quasi_static_driver.h>
 #include <ssc/scenes/scene_run.h>
@@ -62,9 +63,17 @@ namespace ssc
         }
     }
 
-    const std::vector<double> loads   = parameters.punch.loads();
-    const auto                on_step = [&](const unsigned int step) {
+    // in time (creep, relaxation) the steps are times, each with its load
+    std::unique_ptr<PunchHold> hold;
+    if (parameters.time.enabled())
+      hold = std::make_unique<PunchHold>(parameters);
+    const std::vector<double> loads =
+      hold ? hold->loads() : parameters.punch.loads();
+    const auto on_step = [&](const unsigned int step) {
       record.record(step, loads[step]);
+      if (hold)
+        scene.pcout() << "t = " << std::setprecision(6) << hold->times()[step]
+                      << " s: ";
       if (depth_error)
         {
           TimerOutput::Scope t(scene.timer(), "error estimate");
@@ -84,7 +93,10 @@ namespace ssc
         }
       record.print_step(step, loads.size());
     };
-    follow_punch_path(driver, loading, parameters, on_step);
+    if (hold)
+      hold->follow(driver, loading, system, on_step);
+    else
+      follow_punch_path(driver, loading, parameters, on_step);
     {
       TimerOutput::Scope t(scene.timer(), "output");
       record.write_tables(loads, scene.output());
@@ -94,6 +106,13 @@ namespace ssc
       scene.summary(system.field().dof_handler().n_dofs(),
                     model.mesh().triangulation().n_global_active_cells());
     const IndentationResult result = record.add_to_summary(summary);
+    if (hold)
+      {
+        hold->record(result, summary, scene.output());
+        scene.pcout() << "Relaxed fraction over the hold: "
+                      << std::setprecision(4) << hold->relaxed_fraction(result)
+                      << std::endl;
+      }
     scene.output().write_summary(summary);
     scene.print_wall_times();
     return result;

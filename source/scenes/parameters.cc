@@ -144,6 +144,7 @@ namespace ssc
     punch.add_parameters(handler);
     growth.add_parameters(handler);
     incision.add_parameters(handler);
+    time.add_parameters(handler);
     microstructure.add_parameters(handler);
     embedded.add_parameters(handler);
     newton.add_parameters(handler);
@@ -191,6 +192,7 @@ namespace ssc
     punch          = PunchParameters();
     growth         = GrowthParameters();
     incision       = IncisionParameters();
+    time           = TimeParameters();
     microstructure = MicrostructureParameters();
     embedded       = EmbeddedParameters();
     newton         = NewtonParameters();
@@ -220,6 +222,7 @@ namespace ssc
     punch.check();
     growth.check();
     incision.check();
+    time.check();
     microstructure.check();
     embedded.check();
     newton.check();
@@ -363,6 +366,16 @@ namespace ssc
                            "with one global refinement fewer: it needs "
                            "Run/Scene = indentation, Punch/Control = force "
                            "and Mesh/Global refinements >= 1."));
+    AssertThrow(!time.enabled() ||
+                  (run.scene == SceneKind::indentation && nonlinear &&
+                   punch.depth_error_estimate == DepthErrorEstimate::none),
+                ExcMessage("Time/Loading history = ramp and hold is the "
+                           "indentation scene's creep or relaxation: it "
+                           "needs Run/Scene = indentation, a finite-strain "
+                           "law in some layer (visco-elastic layers are "
+                           "finite strain) and no Punch/Depth error "
+                           "estimate (which follows the quasi-static "
+                           "path)."));
     AssertThrow(!punch.edge_contact || nonlinear,
                 ExcMessage("Punch/Edge contact needs Newton's method: give "
                            "at least one layer a nonlinear Material model "

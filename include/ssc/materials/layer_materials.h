@@ -12,6 +12,7 @@
 #include <ssc/materials/material.h>
 #include <ssc/materials/material_registry.h>
 #include <ssc/materials/prestretched_material.h>
+#include <ssc/materials/prony_series.h>
 #include <ssc/mesh/layer_stack.h>
 
 namespace ssc
@@ -74,6 +75,10 @@ namespace ssc
     std::map<std::string, std::string> moved_volumetric_energy;
   };
 
+
+  /// The deviatoric Prony series of @p layer (empty: elastic).
+  PronySeries
+  prony_series(const Layer &layer);
 
   /// The law of @p layer (its "Material model", E and nu) with the
   /// parameters @p laws holds for it: the one place that turns a layer's

@@ -159,6 +159,15 @@ namespace ssc
                   const Tensor<2, 3> &F,
                   const double        gamma = 1.) const;
 
+    /// cauchy_stress() of a law with history in its last accepted state,
+    /// whose history values are @p committed (what the output shows); the
+    /// elastic cauchy_stress() for a law without history.
+    SymmetricTensor<2, 3>
+    accepted_cauchy_stress(const Point<3>                &X,
+                           const Tensor<2, 3>            &F,
+                           const double                   gamma,
+                           const ArrayView<const double> &committed) const;
+
     /// The tangent of the isochoric part at F = I, minor-symmetric: what the
     /// small-strain kernel assembles (with the bulk modulus on the
     /// volumetric strain). Taken at the origin: every law here is isotropic
@@ -180,6 +189,13 @@ namespace ssc
     }
 
   protected:
+    /// The Cauchy stress from the isochoric Kirchhoff stress @p tau_iso at
+    /// F_e, with J = det F and the growth ratio @p gamma.
+    SymmetricTensor<2, 3>
+    grown_cauchy_stress(const SymmetricTensor<2, 3> &tau_iso,
+                        const double                 J,
+                        const double                 gamma) const;
+
     const IsotropicModuli  reference_moduli;
     const VolumetricEnergy volumetric_energy;
   };

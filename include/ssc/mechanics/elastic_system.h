@@ -97,21 +97,22 @@ namespace ssc
       layer_materials.set_prestretch_fraction(f);
     }
 
-    /// The length in time (s) of the step solved next: the visco-elastic
-    /// layers relax over it (0, the default: a load step without time,
-    /// answered instantly). Set it with each step's load: accepting a step
-    /// resets it to 0.
+    /// The time (s) of the state solved next: the visco-elastic layers
+    /// relax over the step from the last accepted state's time to @p t.
+    /// Without it (every scene without time) the time stays 0 and the
+    /// laws answer instantly. Set it with each step's load.
     void
-    set_time_step(const double dt)
+    set_time(const double t)
     {
-      history.set_time_step(dt);
+      solved_time = t;
+      point_history.set_time_step(t - accepted_time);
     }
 
-    /// Whether some layer's law keeps history (visco-elasticity).
-    bool
-    has_history() const
+    /// The laws' history per quadrature point (visco-elastic layers).
+    const QuadratureHistory &
+    history() const
     {
-      return !history.empty();
+      return point_history;
     }
 
     /// Adds @p contribution (e.g. embedded septa) to every cell assembly
@@ -201,7 +202,7 @@ namespace ssc
     LayerMaterials              layer_materials;
     /// History of the laws that keep some, committed with each accepted
     /// load increment and restored when one is abandoned.
-    QuadratureHistory   history;
+    QuadratureHistory   point_history;
     DisplacementField   displacement;
     BoundaryConstraints boundary_constraints;
     GrowthField         growth_field;
@@ -209,6 +210,8 @@ namespace ssc
     SystemAssembler     assembler;
     TangentSystem       tangent;
     Loads               external_loads;
+    /// the time of the state being solved and of the last accepted one (s)
+    double solved_time = 0, accepted_time = 0;
     /// the attached dof contributions, told of converged increments
     std::vector<DofContribution *> dof_contributions;
   };

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include <ssc/base/enum_table.h>
-#include <ssc/materials/prony_series.h>
 
 namespace ssc
 {
@@ -74,10 +73,12 @@ namespace ssc
     /// stress-free one (1: none): the imaged geometry is pre-tensioned
     /// (PrestretchedMaterial).
     double prestretch = 1;
-    /// The deviatoric Prony series of a visco-elastic layer (empty:
-    /// elastic); E and nu are then the instantaneous moduli
-    /// (ViscoelasticMaterial).
-    PronySeries viscoelasticity;
+    /// The deviatoric Prony series of a visco-elastic layer: the relative
+    /// moduli g_i and relaxation times tau_i (s) (empty: elastic); E and nu
+    /// are then the instantaneous moduli (ViscoelasticMaterial, which
+    /// checks them).
+    std::vector<double> relative_moduli;
+    std::vector<double> relaxation_times;
 
     /// Whether this layer can carry lobules (kind SAT or DAT).
     bool
@@ -208,11 +209,15 @@ namespace ssc
       layers[i].prestretch = prestretch;
     }
 
-    /// Makes layer @p i visco-elastic with @p series (tests, benchmarks).
+    /// Makes layer @p i visco-elastic with the Prony terms
+    /// (@p relative_moduli, @p relaxation_times) (tests, benchmarks).
     void
-    set_viscoelasticity(const unsigned int i, const PronySeries &series)
+    set_viscoelasticity(const unsigned int         i,
+                        const std::vector<double> &relative_moduli,
+                        const std::vector<double> &relaxation_times)
     {
-      layers[i].viscoelasticity = series;
+      layers[i].relative_moduli  = relative_moduli;
+      layers[i].relaxation_times = relaxation_times;
     }
 
     /// Adds a layer programmatically (tests, benchmarks).

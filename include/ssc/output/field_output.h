@@ -38,6 +38,7 @@ namespace ssc
     const DisplacementField                &field;
     const LayerMaterials                   &materials;
     const GrowthField                      &growth;
+    const QuadratureHistory                &history;
     const MicrostructureCoupling           &coupling;
     const Kinematics                        kinematics;
     std::unique_ptr<EmbeddedFieldWriter<2>> septa_writer;

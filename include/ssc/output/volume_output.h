@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <ssc/materials/layer_materials.h>
+#include <ssc/materials/quadrature_history.h>
 #include <ssc/mechanics/displacement_field.h>
 #include <ssc/mechanics/growth_field.h>
 #include <ssc/output/run_output.h>
@@ -18,12 +19,14 @@ namespace ssc
    * index; zero elsewhere) from the cell's own law: its mean over the
    * deformed cell, from the law at the quadrature points (small strain for
    * linear layers, finite strain otherwise, with the growth of @p growth);
-   * NaN in inverted cells. write_volume_vtu() writes these.
+   * the laws with history (visco-elastic layers) in the last accepted state
+   * of @p history; NaN in inverted cells. write_volume_vtu() writes these.
    */
   std::vector<SymmetricTensor<2, 3>>
   cell_cauchy_stresses(const DisplacementField &field,
                        const LayerMaterials    &materials,
-                       const GrowthField       &growth);
+                       const GrowthField       &growth,
+                       const QuadratureHistory &history);
 
   /**
    * Writes the volume as VTU pieces (one per rank) with a PVTU record,
@@ -36,6 +39,7 @@ namespace ssc
   write_volume_vtu(const DisplacementField &field,
                    const LayerMaterials    &materials,
                    const GrowthField       &growth,
+                   const QuadratureHistory &history,
                    const RunOutput         &output,
                    const unsigned int       step);
 } // namespace ssc

@@ -19,6 +19,7 @@
 #include <ssc/scenes/incision_parameters.h>
 #include <ssc/scenes/punch_parameters.h>
 #include <ssc/scenes/run_parameters.h>
+#include <ssc/scenes/time_parameters.h>
 
 namespace ssc
 {
@@ -86,6 +87,7 @@ namespace ssc
     PunchParameters          punch;
     GrowthParameters         growth;
     IncisionParameters       incision;
+    TimeParameters           time;
     MicrostructureParameters microstructure;
     EmbeddedParameters       embedded;
     NewtonParameters         newton;
