@@ -1,6 +1,5 @@
 #include <deal.II/base/exceptions.h>
 
-#include <cmath>
 #include <numeric>
 #include <sstream>
 
@@ -16,16 +15,6 @@ namespace ssc
   {
     return 1. -
            std::accumulate(relative_moduli.begin(), relative_moduli.end(), 0.);
-  }
-
-
-  double
-  PronySeries::relaxation_function(const double t) const
-  {
-    double g = long_term_fraction();
-    for (unsigned int i = 0; i < size(); ++i)
-      g += relative_moduli[i] * std::exp(-t / relaxation_times[i]);
-    return g;
   }
 
 

@@ -8,11 +8,11 @@ namespace ssc
   PunchHold::PunchHold(const Parameters &parameters)
     : parameters(parameters)
     , step_times(parameters.time.step_times())
+    , held_load(parameters.punch.loads().back())
     , ramp_end(parameters.time.ramp_steps - 1)
   {
-    const double held = parameters.punch.loads().back();
     for (const double t : step_times)
-      step_loads.push_back(held * parameters.time.load_fraction(t));
+      step_loads.push_back(held_load * parameters.time.load_fraction(t));
   }
 
 
@@ -22,11 +22,10 @@ namespace ssc
                     ElasticSystem                           &system,
                     const std::function<void(unsigned int)> &on_step) const
   {
-    const double held = parameters.punch.loads().back();
     driver.run(
       step_times,
       [&](const double t) {
-        loading.apply(held * parameters.time.load_fraction(t));
+        loading.apply(held_load * parameters.time.load_fraction(t));
         system.set_time(t);
       },
       // the first step split as the quasi-static path splits its first
@@ -60,7 +59,7 @@ namespace ssc
     summary["relaxed_fraction"] = relaxed_fraction(result);
     summary["loading_history"]  = {{"history", to_string(time.history)},
                                    {"kind", by_force ? "creep" : "relaxation"},
-                                   {"held_load", step_loads.back()},
+                                   {"held_load", held_load},
                                    {"held_load_unit", by_force ? "N" : "mm"},
                                    {"ramp_time_s", time.ramp_time},
                                    {"hold_time_s", time.hold_time},

@@ -37,10 +37,6 @@ namespace ssc
     double
     long_term_fraction() const;
 
-    /// g(t).
-    double
-    relaxation_function(const double t) const;
-
     /// Throws, naming the entries under @p path, unless the two lists have
     /// the same length, every g_i lies in (0, 1) with their sum below 1 and
     /// every tau_i is positive.

@@ -92,12 +92,6 @@ namespace ssc
       return inner->energy(X, F);
     }
 
-    const PronySeries &
-    prony_series() const
-    {
-      return series;
-    }
-
   private:
     /// Writes S_0 and the H_i of the step into @p history.trial and returns
     /// k and the Kirchhoff stress of S_h, F S_h F^T.

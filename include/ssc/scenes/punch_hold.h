@@ -66,6 +66,8 @@ namespace ssc
     const Parameters   &parameters;
     std::vector<double> step_times;
     std::vector<double> step_loads;
+    /// The held load: the last force (creep) or the depth (relaxation).
+    const double held_load;
     /// The index of the step that ends the ramp.
     unsigned int ramp_end;
   };
