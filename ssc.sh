@@ -156,7 +156,7 @@ case "${1:-run}" in
           /usr/bin/python3 "$ROOT/scripts/plot_incision.py" "$folder"
         fi
         ;;
-      *creep*.prm | *relaxation*.prm)
+      *creep*.prm | *relaxation*.prm | *cyclic*.prm)
         folder="$ROOT/output/$(basename "$prm" .prm)"
         if [ -f "$folder/time_history.csv" ]; then
           /usr/bin/python3 "$ROOT/scripts/plot_time_history.py" "$folder"

@@ -109,9 +109,7 @@ namespace ssc
     if (hold)
       {
         hold->record(result, summary, scene.output());
-        scene.pcout() << "Relaxed fraction over the hold: "
-                      << std::setprecision(4) << hold->relaxed_fraction(result)
-                      << std::endl;
+        hold->print(result, scene.pcout());
       }
     scene.output().write_summary(summary);
     scene.print_wall_times();

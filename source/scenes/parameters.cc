@@ -369,9 +369,10 @@ namespace ssc
     AssertThrow(!time.enabled() ||
                   (run.scene == SceneKind::indentation && nonlinear &&
                    punch.depth_error_estimate == DepthErrorEstimate::none),
-                ExcMessage("Time/Loading history = ramp and hold is the "
-                           "indentation scene's creep or relaxation: it "
-                           "needs Run/Scene = indentation, a finite-strain "
+                ExcMessage("Time/Loading history = " +
+                           std::string(to_string(time.history)) +
+                           " moves the indentation scene's punch in time: "
+                           "it needs Run/Scene = indentation, a finite-strain "
                            "law in some layer (visco-elastic layers are "
                            "finite strain) and no Punch/Depth error "
                            "estimate (which follows the quasi-static "

@@ -19,24 +19,33 @@ namespace ssc
     /// no time: the quasi-static path through the loads, laws answer
     /// instantly
     none,
-    /// the load rises linearly to its held value, then is held
-    ramp_and_hold
+    /// the load rises linearly to its peak, then is held
+    ramp_and_hold,
+    /// ramp and hold, then the load falls linearly to zero and the body
+    /// recovers (creep recovery, or the force after a held depth)
+    ramp_hold_and_unload,
+    /// triangular cycles between zero and the peak load (hysteresis)
+    cyclic
   };
 
-  constexpr std::array<std::pair<LoadingHistory, const char *>, 2>
+  constexpr std::array<std::pair<LoadingHistory, const char *>, 4>
   enum_table(LoadingHistory)
   {
     return {{{LoadingHistory::none, "none"},
-             {LoadingHistory::ramp_and_hold, "ramp and hold"}}};
+             {LoadingHistory::ramp_and_hold, "ramp and hold"},
+             {LoadingHistory::ramp_hold_and_unload, "ramp, hold and unload"},
+             {LoadingHistory::cyclic, "cyclic"}}};
   }
 
   /**
    * Section "Time": the loading history of a time-dependent indentation
-   * (creep under a held force, relaxation at a held depth), and its time
-   * steps. The steps are fixed: the ramp's are equal, the hold's grow
-   * geometrically (relaxation is fastest at its start); the error they
-   * leave is shown by halving them (the integration of the visco-elastic
-   * laws is second order in the step).
+   * (creep under a held force, relaxation at a held depth, their recovery
+   * after unloading, cycles), and its time steps. The history is a
+   * piecewise linear load fraction (of the peak load) through segments;
+   * the steps are fixed per segment: equal where the load changes,
+   * growing geometrically where it is held (relaxation is fastest at the
+   * start of a hold). The error they leave is shown by halving them (the
+   * integration of the visco-elastic laws is second order in the step).
    */
   struct TimeParameters
   {
@@ -45,13 +54,40 @@ namespace ssc
     double         hold_time  = 600;
     unsigned int   ramp_steps = 4;
     unsigned int   hold_steps = 24;
-    /// Ratio of successive hold steps (1: equal steps).
-    double hold_step_growth = 1.2;
+    /// Ratio of successive steps of a hold or recovery (1: equal steps).
+    double       hold_step_growth = 1.2;
+    double       unload_time      = 1;
+    unsigned int unload_steps     = 4;
+    double       recovery_time    = 600;
+    unsigned int recovery_steps   = 24;
+    unsigned int cycles           = 3;
+    double       cycle_period     = 2;
+    unsigned int steps_per_cycle  = 16;
+
+    /// One piece of the history: over @p duration the load fraction goes
+    /// linearly from the previous segment's end to @p end_fraction, in
+    /// @p steps steps growing by @p step_growth.
+    struct Segment
+    {
+      double       duration;
+      double       end_fraction;
+      unsigned int steps;
+      double       step_growth;
+    };
 
     bool
     enabled() const
     {
       return history != LoadingHistory::none;
+    }
+
+    /// Whether the history holds its peak load (ramp and hold, with or
+    /// without unloading): the relaxed fraction is defined.
+    bool
+    holds() const
+    {
+      return history == LoadingHistory::ramp_and_hold ||
+             history == LoadingHistory::ramp_hold_and_unload;
     }
 
     void
@@ -61,13 +97,21 @@ namespace ssc
     void
     check() const;
 
+    /// The history's segments, from the unloaded state at t = 0.
+    std::vector<Segment>
+    segments() const;
+
     /// The end times of the steps (s), increasing, the last one the end of
-    /// the hold.
+    /// the history.
     std::vector<double>
     step_times() const;
 
-    /// The fraction of the held load applied at time @p t: t / ramp time
-    /// on the ramp, 1 after it.
+    /// The number of steps from the start to the end of segment @p k.
+    unsigned int
+    steps_through_segment(const unsigned int k) const;
+
+    /// The fraction of the peak load applied at time @p t (linear within
+    /// each segment; the last segment's end fraction after it).
     double
     load_fraction(const double t) const;
   };
