@@ -26,6 +26,7 @@ non-zero exit status.
 import csv
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -183,6 +184,16 @@ def read_summary(folder):
     """The summary.json a run wrote into its folder."""
     with open(os.path.join(folder, "summary.json")) as f:
         return json.load(f)
+
+
+def layer_moduli(folder, layer="SAT"):
+    """(E, nu) of layer in the parameters.prm a run wrote (every value it
+    used, includes resolved)."""
+    text = open(os.path.join(folder, "parameters.prm")).read()
+    block = text[text.index(f"subsection {layer}\n"):]
+    E = float(re.search(r"set Young's modulus\s*=\s*(\S+)", block).group(1))
+    nu = float(re.search(r"set Poisson's ratio\s*=\s*(\S+)", block).group(1))
+    return E, nu
 
 
 def read_table(folder, name="force_displacement.csv"):

@@ -24,7 +24,7 @@ creep_runs.csv (one row per run) and creep.png.
 
     /usr/bin/python3 benchmarks/forearm/creep.py [--plot-only]
 """
-import csv, math, os, re, sys
+import csv, math, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -68,15 +68,6 @@ def long_term_moduli(E, nu, g):
             (3 * kappa - 2 * mu_long) / (2 * (3 * kappa + mu_long)))
 
 
-def fat_moduli(folder):
-    """(E, nu) of the SAT in the parameters a run used."""
-    text = open(os.path.join(folder, "parameters.prm")).read()
-    block = text[text.index("subsection SAT"):]
-    E = float(re.search(r"set Young's modulus\s*=\s*(\S+)", block).group(1))
-    nu = float(re.search(r"set Poisson's ratio\s*=\s*(\S+)", block).group(1))
-    return E, nu
-
-
 def variants(fat):
     E_long, nu_long = long_term_moduli(*fat, G)
     return [
@@ -102,7 +93,7 @@ def measure():
                                    "Run/Write fields": "false"},
                            output_dir=folder, name="probe", ranks=2,
                            timeout=900, check=True)
-    fat = fat_moduli(probe.folder)
+    fat = ssc_runner.layer_moduli(probe.folder)
     for k, (label, prm, overrides) in enumerate(variants(fat)):
         overrides = dict(overrides, **{"Run/Write fields": "false"})
         run = ssc_runner.run(prm, overrides, output_dir=folder,

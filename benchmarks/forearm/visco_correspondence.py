@@ -26,7 +26,7 @@ Writes benchmarks/forearm/results/visco_correspondence.csv and .png.
 
     /usr/bin/python3 benchmarks/forearm/visco_correspondence.py [--plot-only]
 """
-import csv, math, os, re, sys
+import csv, math, os, sys
 
 import numpy
 
@@ -89,14 +89,6 @@ def sls_ramp_creep(t):
     return (integral(t) - (integral(t - T_RAMP) if t > T_RAMP else 0)) / T_RAMP
 
 
-def fat_moduli(folder):
-    text = open(os.path.join(folder, "parameters.prm")).read()
-    block = text[text.index("subsection SAT"):]
-    E = float(re.search(r"set Young's modulus\s*=\s*(\S+)", block).group(1))
-    nu = float(re.search(r"set Poisson's ratio\s*=\s*(\S+)", block).group(1))
-    return E, nu
-
-
 def elastic_overrides(E, nu, phi):
     """The elastic scene, the fat's shear modulus phi mu, bulk unchanged."""
     mu, kappa = E / (2 * (1 + nu)), E / (3 * (1 - 2 * nu))
@@ -128,7 +120,7 @@ def measure():
               f"{len(s['time_s'])} steps", flush=True)
         rows.append({"what": label, "wall_s": round(run.wall_s, 1),
                      "dofs": s["dofs"]})
-    E, nu = fat_moduli(os.path.join(FOLDER, "time_steps"))
+    E, nu = ssc_runner.layer_moduli(os.path.join(FOLDER, "time_steps"))
 
     # the compliance C(phi) of the elastic body whose fat has the shear
     # modulus phi mu, phi = mu~(s) / mu in (g_inf, 1], at Chebyshev points,
