@@ -113,11 +113,15 @@ namespace ssc
       {"peak_load", peak_load},
       {"peak_load_unit", by_force ? "N" : "mm"}};
     if (time.holds())
-      history["ramp_end_s"] = step_times[ramp_end],
-      history["hold_end_s"] = step_times[hold_end];
+      {
+        history["ramp_end_s"] = step_times[ramp_end];
+        history["hold_end_s"] = step_times[hold_end];
+      }
     if (time.history == LoadingHistory::cyclic)
-      history["cycle_period_s"] = time.cycle_period,
-      history["cycles"]         = time.cycles;
+      {
+        history["cycle_period_s"] = time.cycle_period;
+        history["cycles"]         = time.cycles;
+      }
     history["steps"]           = step_times.size();
     summary["loading_history"] = history;
     output.write_file("time_history.csv", [&](std::ostream &out) {
