@@ -196,6 +196,25 @@ def layer_moduli(folder, layer="SAT"):
     return E, nu
 
 
+def relaxed_layer_overrides(E, nu, shear_fraction, layers=("SAT", "DAT")):
+    """Overrides that make a visco-elastic scene elastic, with no time and
+    no Prony terms, its layers' shear modulus shear_fraction times that of
+    (E, nu) and their bulk modulus unchanged: the elastic body of a
+    visco-elastic one at a relaxed (or transformed) shear modulus."""
+    mu, kappa = E / (2 * (1 + nu)), E / (3 * (1 - 2 * nu))
+    mu_s = shear_fraction * mu
+    overrides = {"Time/Loading history": "none"}
+    for layer in layers:
+        base = f"Layer stack/{layer}/"
+        overrides[base + "Viscoelasticity/Relative moduli"] = ""
+        overrides[base + "Viscoelasticity/Relaxation times"] = ""
+        overrides[base + "Young's modulus"] = repr(
+            9 * kappa * mu_s / (3 * kappa + mu_s))
+        overrides[base + "Poisson's ratio"] = repr(
+            (3 * kappa - 2 * mu_s) / (2 * (3 * kappa + mu_s)))
+    return overrides
+
+
 def read_table(folder, name="force_displacement.csv"):
     """The rows (dicts of strings) of a CSV file a run wrote."""
     with open(os.path.join(folder, name), newline="") as f:

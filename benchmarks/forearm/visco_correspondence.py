@@ -89,22 +89,6 @@ def sls_ramp_creep(t):
     return (integral(t) - (integral(t - T_RAMP) if t > T_RAMP else 0)) / T_RAMP
 
 
-def elastic_overrides(E, nu, phi):
-    """The elastic scene, the fat's shear modulus phi mu, bulk unchanged."""
-    mu, kappa = E / (2 * (1 + nu)), E / (3 * (1 - 2 * nu))
-    mu_s = phi * mu
-    overrides = {"Time/Loading history": "none", "Run/Test mode": "true"}
-    for layer in FAT:
-        base = f"Layer stack/{layer}/"
-        overrides[base + "Viscoelasticity/Relative moduli"] = ""
-        overrides[base + "Viscoelasticity/Relaxation times"] = ""
-        overrides[base + "Young's modulus"] = repr(
-            9 * kappa * mu_s / (3 * kappa + mu_s))
-        overrides[base + "Poisson's ratio"] = repr(
-            (3 * kappa - 2 * mu_s) / (2 * (3 * kappa + mu_s)))
-    return overrides
-
-
 def measure():
     rows = []
     visco = {}
@@ -135,7 +119,8 @@ def measure():
              for i in range(N_NODES)]
     compliances, elastic_wall = [], 0.0
     for i, phi in enumerate(nodes):
-        run = ssc_runner.run(PRM, elastic_overrides(E, nu, phi),
+        run = ssc_runner.run(PRM, dict(ssc_runner.relaxed_layer_overrides(
+                                 E, nu, phi), **{"Run/Test mode": "true"}),
                              output_dir=FOLDER, name=f"elastic{i}",
                              timeout=900, check=True)
         compliances.append(run.summary()["depth_mm"][-1] / FORCE)
