@@ -191,8 +191,9 @@ namespace
           deallog << ' ' << std::setprecision(2) << error;
         deallog << std::setprecision(4) << std::endl;
       }
-    // the order from the coarser steps: at the finest, the round-off of
-    // the tiny strains (about 1e-8) is no longer far below the error
+    // the order from the coarser steps: at the finest, the law's
+    // nonlinearity and the round-off at these tiny strains (a few 1e-8) are
+    // no longer far below the error
     deallog << "  observed order from dt = 0.1 to 0.025 s:";
     for (unsigned int k = 0; k < times.size(); ++k)
       deallog << ' ' << std::setprecision(2)
