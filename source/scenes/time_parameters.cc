@@ -86,8 +86,7 @@ namespace ssc
   void
   TimeParameters::check() const
   {
-    if (history == LoadingHistory::ramp_and_hold ||
-        history == LoadingHistory::ramp_hold_and_unload)
+    if (holds())
       {
         AssertThrow(ramp_time > 0,
                     ExcMessage("Time/Ramp time must be positive: a load "
