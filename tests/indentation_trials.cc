@@ -1,6 +1,7 @@
 // Reading the MULTIS in vivo indentation table (data/multis):
 // - the shipped file: trials per site, the lines skipped for a missing
-//   measurement (8 rows without a muscle thickness), the probe areas
+//   measurement (8 rows without a muscle thickness), the subjects'
+//   covariates (age, sex, BMI, activity level), the probe areas
 //   (360 and 675 mm^2, the two transducer faces), and one trial's values
 //   checked against the relations the README states (the displacement is
 //   the sum of the layers' compressions, TotalStrain x Thickness);
@@ -8,7 +9,8 @@
 //   a row with a field too few, a value that is not a number, a negative
 //   thickness, a header without a column ssc needs, a site list that
 //   matches no trial, a file that does not exist, a hexadecimal number,
-//   thicknesses and strains outside a human range, a header with two
+//   thicknesses, strains and ages outside a human range, an activity
+//   level the table does not use, a header with two
 //   columns of one name, an empty subject, a row given twice, a folder
 //   and a device as the file.
 
@@ -110,7 +112,8 @@ main(int argc, char **argv)
     ssc::read_indentation_trials(data_file, {"LA_A", "LA_P"});
   const ssc::IndentationTrial &t = forearm.trials.front();
   deallog << "first forearm trial: line " << t.line << ", subject " << t.subject
-          << ", " << t.site << ", " << t.sex << std::endl
+          << ", " << t.site << ", " << t.sex << ", age " << t.age << ", BMI "
+          << t.bmi << ", activity level " << t.activity_level << std::endl
           << "  thicknesses " << t.skin_thickness << ' ' << t.fat_thickness
           << ' ' << t.muscle_thickness << " mm, force " << t.max_force
           << " N, area " << t.probe_area << " mm^2" << std::endl
@@ -172,9 +175,18 @@ main(int argc, char **argv)
   });
   expect_error("fat strain 7.5",
                [] { ssc::read_indentation_trials("large_strain.csv"); });
+  write_edited_copy("activity.csv", keep, [](std::string &row) {
+    replace_field(row, 6, "Very active");
+  });
+  expect_error("activity level 'Very active'",
+               [] { ssc::read_indentation_trials("activity.csv"); });
+  write_edited_copy("age.csv", keep, [](std::string &row) {
+    replace_field(row, 3, "-20");
+  });
+  expect_error("age -20", [] { ssc::read_indentation_trials("age.csv"); });
   write_edited_copy(
     "two_fat_columns.csv",
-    [](std::string &header) { replace_field(header, 3, "Fat"); },
+    [](std::string &header) { replace_field(header, 7, "Fat"); },
     keep);
   expect_error("two columns named Fat",
                [] { ssc::read_indentation_trials("two_fat_columns.csv"); });

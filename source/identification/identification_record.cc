@@ -3,6 +3,7 @@
 #include <iomanip>
 
 #include <ssc/identification/identification_record.h>
+#include <ssc/identification/personalised_predictions.h>
 
 namespace ssc
 {
@@ -32,13 +33,15 @@ namespace ssc
                  const std::string      &what,
                  const PredictionErrors &errors)
     {
-      pcout << "  " << what << ": median |error| stiffness " << std::fixed
-            << std::setprecision(1) << errors.stiffness_pct
-            << " %, layer strains " << errors.pooled_layer_strain_pct
-            << " % (skin " << errors.layer_strain_pct[0] << ", fat "
-            << errors.layer_strain_pct[1] << ", muscle "
-            << errors.layer_strain_pct[2] << ")" << std::defaultfloat
-            << std::endl;
+      // formatted apart: the stream's precision stays the caller's
+      std::ostringstream line;
+      line << "  " << what << ": median |error| stiffness " << std::fixed
+           << std::setprecision(1) << errors.stiffness_pct
+           << " %, layer strains " << errors.pooled_layer_strain_pct
+           << " % (skin " << errors.layer_strain_pct[0] << ", fat "
+           << errors.layer_strain_pct[1] << ", muscle "
+           << errors.layer_strain_pct[2] << ")";
+      pcout << line.str() << std::endl;
     }
 
     /// One row of identification.csv per trial.
@@ -110,6 +113,7 @@ namespace ssc
         << std::setprecision(8);
     subject_csv << "site,subject,skin_MPa,fat_MPa,muscle_MPa,converged\n"
                 << std::setprecision(8);
+    person_csv << std::setprecision(8);
   }
 
 
@@ -182,6 +186,104 @@ namespace ssc
 
 
   void
+  IdentificationRecord::add_personalised(
+    const std::vector<PersonalisedPredictions> &methods,
+    const std::vector<SiteFit>                 &sites,
+    const std::vector<std::string>             &site_names,
+    ConditionalOStream                         &pcout)
+  {
+    person_csv << "site,subject,set,stiffness_measured_N_per_mm,"
+                  "stiffness_model,stiffness_springs";
+    std::vector<const PersonalisedPredictions *> determined;
+    for (const PersonalisedPredictions &method : methods)
+      if (method.not_determined.empty())
+        {
+          determined.push_back(&method);
+          person_csv << ",stiffness_"
+                     << subject_information_key(method.information);
+        }
+    person_csv << '\n';
+    for (unsigned int k = 0; k < sites.size(); ++k)
+      for (const bool held_out : {false, true})
+        {
+          const SiteFit &s   = sites[k];
+          const auto &trials = held_out ? s.split.held_out : s.split.training;
+          for (unsigned int t = 0; t < trials.size(); ++t)
+            {
+              person_csv << site_names[k] << ',' << trials[t].subject << ','
+                         << (held_out ? "held_out" : "training") << ','
+                         << trials[t].surface_stiffness << ','
+                         << (held_out ? s.held_out : s.training)[t].stiffness
+                         << ','
+                         << (held_out ? s.held_out_springs :
+                                        s.training_springs)[t]
+                              .stiffness;
+              for (const PersonalisedPredictions *method : determined)
+                person_csv << ','
+                           << (held_out ? method->held_out :
+                                          method->training)[k][t]
+                                .stiffness;
+              person_csv << '\n';
+            }
+        }
+
+    for (const PersonalisedPredictions &method : methods)
+      {
+        const std::string key = subject_information_key(method.information);
+        if (!method.not_determined.empty())
+          {
+            personalised[key] = {{"not_determined", method.not_determined}};
+            pcout << "  " << key
+                  << ": not determined: " << method.not_determined << std::endl;
+            continue;
+          }
+        std::vector<IndentationTrial> trials;
+        std::vector<TrialPrediction>  predictions;
+        nlohmann::ordered_json        by_site;
+        for (unsigned int k = 0; k < sites.size(); ++k)
+          {
+            const auto &held_out = sites[k].split.held_out;
+            trials.insert(trials.end(), held_out.begin(), held_out.end());
+            predictions.insert(predictions.end(),
+                               method.held_out[k].begin(),
+                               method.held_out[k].end());
+            const PredictionErrors errors =
+              prediction_errors(method.held_out[k], held_out);
+            nlohmann::ordered_json site = errors_json(errors);
+            site["training"]            = errors_json(
+              prediction_errors(method.training[k], sites[k].split.training));
+            site["r_squared"] = method.models[k].r_squared();
+            // each coefficient as the factor on the moduli per unit of its
+            // feature, exp(beta)
+            for (const FactorCoefficient &c : method.models[k].coefficients())
+              site["moduli_factor"][c.name] = {
+                {"value", std::exp(c.value)},
+                {"ci95_lower", std::exp(c.lower)},
+                {"ci95_upper", std::exp(c.upper)}};
+            by_site[site_names[k]] = site;
+            print_errors(pcout, site_names[k] + " held out, " + key, errors);
+          }
+        personalised[key] = errors_json(prediction_errors(predictions, trials));
+        personalised[key]["per_site"] = by_site;
+      }
+
+    // the ceiling of any per-person method that uses other sites
+    if (personalised.contains("cross_site") &&
+        !personalised["cross_site"].contains("not_determined"))
+      {
+        const auto r = site_correlations(sites);
+        for (unsigned int a = 0; a < sites.size(); ++a)
+          for (unsigned int b = 0; b < sites.size(); ++b)
+            if (a != b)
+              personalised["cross_site"]["site_correlation"][site_names[a]]
+                          [site_names[b]] = std::isfinite(r[a][b]) ?
+                                              nlohmann::ordered_json(r[a][b]) :
+                                              nlohmann::ordered_json();
+      }
+  }
+
+
+  void
   IdentificationRecord::add_wall_time(const std::string &site,
                                       const double       seconds)
   {
@@ -205,6 +307,8 @@ namespace ssc
     scene.output().write_text("identification.csv", csv.str());
     if (id.per_subject_fits)
       scene.output().write_text("per_subject_moduli.csv", subject_csv.str());
+    if (!personalised.empty())
+      scene.output().write_text("person_predictions.csv", person_csv.str());
     nlohmann::ordered_json summary = scene.summary(dofs, cells);
     summary["data_file"]           = id.data_file;
     summary["training_fraction"]   = id.training_fraction;
@@ -217,7 +321,9 @@ namespace ssc
     prediction["baseline"] =
       errors_json(prediction_errors(all_springs, all_held_out));
     prediction["per_site"] = per_site;
-    summary["prediction"]  = prediction;
+    for (const auto &[key, value] : personalised.items())
+      prediction[key] = value;
+    summary["prediction"] = prediction;
     scene.output().write_summary(summary);
   }
 } // namespace ssc

@@ -11,6 +11,7 @@
 #include <ssc/base/round_robin.h>
 #include <ssc/identification/identification_record.h>
 #include <ssc/identification/identification_scene.h>
+#include <ssc/identification/personalised_predictions.h>
 #include <ssc/identification/probe_forward_model.h>
 #include <ssc/scenes/scene_run.h>
 
@@ -124,34 +125,70 @@ namespace ssc
     }
 
 
-    /// @p site's @p trials split by subject; throws naming the site and
-    /// Training fraction if either part would be empty.
+    /**
+     * The subjects of @p data split once for all sites (a held-out subject
+     * is held out everywhere, so that its trials at other sites can inform
+     * its prediction without having been fitted); throws naming the
+     * Training fraction if either part would be empty.
+     */
     TrialSplit
-    split_site(const std::vector<IndentationTrial> &trials,
-               const IdentificationParameters      &id,
-               const std::string                   &site)
+    split_subjects(const IndentationData          &data,
+                   const IdentificationParameters &id)
     {
       try
         {
-          return split_by_subject(trials, id.training_fraction, id.split_seed);
+          return split_by_subject(data.trials,
+                                  id.training_fraction,
+                                  id.split_seed);
         }
       catch (const ExceptionBase &)
         {
-          // split_by_subject's own message names neither site nor parameter
+          // split_by_subject's own message names no parameter
           std::set<std::string> subjects;
-          for (const IndentationTrial &trial : trials)
+          for (const IndentationTrial &trial : data.trials)
             subjects.insert(trial.subject);
           std::ostringstream message;
           message << "Identification/Training fraction = "
                   << id.training_fraction
                   << " leaves no training or no held-out subject among the "
-                  << subjects.size() << " subject(s) with trials at site "
-                  << site
-                  << " (Identification/Sites, Data file): a site needs "
-                     "trials of at least two subjects.";
+                  << subjects.size()
+                  << " subject(s) with trials (Identification/Sites, Data "
+                     "file): the identification needs trials of at least "
+                     "two subjects.";
           AssertThrow(false, ExcMessage(message.str()));
         }
       return {};
+    }
+
+
+    /// The trials of @p site in @p split; throws naming the site if it
+    /// has no training or no held-out trial.
+    TrialSplit
+    split_site(const TrialSplit &split, const std::string &site)
+    {
+      TrialSplit site_split;
+      const auto at_site = [&site](const IndentationTrial &t) {
+        return t.site == site;
+      };
+      std::copy_if(split.training.begin(),
+                   split.training.end(),
+                   std::back_inserter(site_split.training),
+                   at_site);
+      std::copy_if(split.held_out.begin(),
+                   split.held_out.end(),
+                   std::back_inserter(site_split.held_out),
+                   at_site);
+      AssertThrow(!site_split.training.empty() && !site_split.held_out.empty(),
+                  ExcMessage("The split of the subjects (Identification/"
+                             "Training fraction, Split seed) leaves no " +
+                             std::string(site_split.training.empty() ?
+                                           "training" :
+                                           "held-out") +
+                             " subject with a trial at site " + site +
+                             " (Identification/Sites, Data file): a site "
+                             "needs trials of at least two subjects, one on "
+                             "each side."));
+      return site_split;
     }
 
 
@@ -169,12 +206,13 @@ namespace ssc
                    const IdentificationParameters &id,
                    const std::string              &path)
     {
+      const TrialSplit        split = split_subjects(data, id);
       std::vector<SiteTrials> sites;
       for (const std::string &site : id.sites)
         {
           SiteTrials s;
           s.trials = site_trials(data, site, path);
-          s.split  = split_site(s.trials, id, site);
+          s.split  = split_site(split, site);
           sites.push_back(std::move(s));
         }
       return sites;
@@ -288,6 +326,7 @@ namespace ssc
     const ProbeForwardModel model(parameters, scene.timer());
     const LayerModuliFit    fitter(model, id, mpi_communicator);
     IdentificationRecord    record;
+    std::vector<SiteFit>    site_fits;
     for (unsigned int k = 0; k < id.sites.size(); ++k)
       {
         const std::string                   &site   = id.sites[k];
@@ -313,7 +352,16 @@ namespace ssc
         if (!parameters.run.test_mode)
           pcout << "  " << std::setprecision(3) << site_timer.wall_time()
                 << " s" << std::endl;
+        site_fits.push_back(s);
       }
+    pcout << "Per-person predictions (the population model's moduli times "
+             "a subject factor from covariates and the subject's other "
+             "sites):"
+          << std::endl;
+    record.add_personalised(personalised_predictions(site_fits),
+                            site_fits,
+                            id.sites,
+                            pcout);
     record.write(scene, id);
     scene.print_wall_times();
   }

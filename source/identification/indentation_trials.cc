@@ -92,8 +92,11 @@ namespace ssc
     // the columns used, by their names in the MULTIS table
     const std::vector<std::string>      text_columns = {"SubID",
                                                         "Location",
-                                                        "Gender"};
-    const std::vector<std::string>      measured     = {"Skin",
+                                                        "Gender",
+                                                        "ActivityLevel"};
+    const std::vector<std::string>      measured     = {"Age",
+                                                        "BMI",
+                                                        "Skin",
                                                         "Fat",
                                                         "Muscle",
                                                         "MaxForce",
@@ -189,6 +192,24 @@ namespace ssc
         trial.subject = field("SubID");
         trial.site    = field("Location");
         trial.sex     = field("Gender");
+        trial.age =
+          value_in("Age", 0, 130, "an age lies between 0 and 130 years");
+        trial.bmi                                      = value_in("BMI",
+                             5,
+                             100,
+                             "a body-mass index lies between 5 and 100 kg/m^2");
+        const std::vector<std::string> activity_levels = {"Sedentary",
+                                                          "Moderately active",
+                                                          "Active"};
+        const auto level = std::find(activity_levels.begin(),
+                                     activity_levels.end(),
+                                     field("ActivityLevel"));
+        AssertThrow(level != activity_levels.end(),
+                    ExcMessage(where + ": column ActivityLevel is '" +
+                               field("ActivityLevel") +
+                               "'; it is one of Sedentary, Moderately active, "
+                               "Active."));
+        trial.activity_level = level - activity_levels.begin();
         AssertThrow(!trial.subject.empty(),
                     ExcMessage(where + ": column SubID is empty; every "
                                        "trial needs its subject."));

@@ -12,6 +12,7 @@
 #include <ssc/identification/layer_moduli_fit.h>
 #include <ssc/identification/prediction_errors.h>
 #include <ssc/identification/spring_series.h>
+#include <ssc/identification/subject_factor_model.h>
 #include <ssc/scenes/scene_run.h>
 
 namespace ssc
@@ -32,6 +33,8 @@ namespace ssc
     std::vector<TrialPrediction> held_out_springs, training_springs;
   };
 
+
+  struct PersonalisedPredictions;
 
   /**
    * The identification's record: per site the fit, the predictions and
@@ -58,6 +61,18 @@ namespace ssc
                     const std::vector<std::array<double, 4>> &rows,
                     ConditionalOStream                       &pcout);
 
+    /**
+     * Records the per-person @p methods built on the population models of
+     * @p sites (named @p site_names): their held-out errors pooled and per
+     * site, their coefficients and explained fractions, the correlation of
+     * the subjects' log factors between sites, and every trial's
+     * predictions (person_predictions.csv); prints their errors.
+     */
+    void
+    add_personalised(const std::vector<PersonalisedPredictions> &methods,
+                     const std::vector<SiteFit>                 &sites,
+                     const std::vector<std::string>             &site_names,
+                     ConditionalOStream                         &pcout);
     /// Records @p site's wall time (s).
     void
     add_wall_time(const std::string &site, const double seconds);
@@ -78,10 +93,10 @@ namespace ssc
     write(SceneRun &scene, const IdentificationParameters &parameters) const;
 
   private:
-    nlohmann::ordered_json        identification, per_site;
+    nlohmann::ordered_json        identification, per_site, personalised;
     std::vector<IndentationTrial> all_held_out;
     std::vector<TrialPrediction>  all_model, all_springs;
-    std::ostringstream            csv, subject_csv;
+    std::ostringstream            csv, subject_csv, person_csv;
     unsigned int                  dofs = 0, cells = 0;
   };
 } // namespace ssc

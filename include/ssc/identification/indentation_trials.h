@@ -23,6 +23,12 @@ namespace ssc
     /// Site code, e.g. LA_A (lower arm, anterior).
     std::string site;
     std::string sex;
+    /// Age (years) and body-mass index (kg/m^2) of the subject.
+    double age = 0;
+    double bmi = 0;
+    /// Activity level of the subject: 0 sedentary, 1 moderately active,
+    /// 2 active (the table's three words).
+    unsigned int activity_level = 0;
 
     double skin_thickness   = 0;
     double fat_thickness    = 0;
