@@ -29,6 +29,15 @@ def read_rows(path):
         return list(csv.DictReader(f))
 
 
+def log_ticks(ax):
+    """Labels at 1, 2 and 5 times the powers of ten on both log axes (a
+    panel within one decade would otherwise have no label)."""
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1, 2, 5)))
+        axis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+        axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+
+
 def panel(ax, measured, model, springs, label, unit):
     # log axes: a few measured compressions are zero or negative
     keep = (measured > 0) & (model > 0) & (springs > 0)
@@ -41,8 +50,7 @@ def panel(ax, measured, model, springs, label, unit):
               label="ssc FE, fitted moduli (%.0f %%)" % err(model))
     ax.loglog(measured, springs, "x", ms=4,
               label="springs in series (%.0f %%)" % err(springs))
-    for axis in (ax.xaxis, ax.yaxis):
-        axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    log_ticks(ax)
     ax.set_xlim(lo, hi)
     ax.set_ylim(lo, hi)
     ax.set_xlabel("measured " + unit)
@@ -99,8 +107,7 @@ def person_figure(folder, sites):
             predicted = np.array([float(r[key]) for r in site_rows])
             errors.extend(np.abs(predicted / measured - 1))
             ax.loglog(measured, predicted, "o", ms=3, label=site)
-        for axis in (ax.xaxis, ax.yaxis):
-            axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+        log_ticks(ax)
         ax.set_xlim(lo, hi)
         ax.set_ylim(lo, hi)
         ax.set_xlabel("measured stiffness (N/mm)")
