@@ -5,7 +5,8 @@ with the fitted population moduli and for the springs-in-series baseline,
 with the median absolute errors; the same for the fat and muscle strains
 at the largest force; and, where the run made them
 (person_predictions.csv), the held-out stiffness of every site predicted by
-each method: the population model, the per-person ones (covariates, the
+each method: the population model, the same recalibrated to the training
+stiffnesses (one factor for all), the per-person ones (covariates, the
 subject's other sites, both) and the springs.
 
     /usr/bin/python3 scripts/plot_identification.py output/identification
@@ -77,6 +78,7 @@ def site_grid(n_sites, rows_per_site=1):
 
 
 METHODS = [("stiffness_model", "population FE model"),
+           ("stiffness_calibrated", "FE, one factor for all"),
            ("stiffness_covariates", "FE x covariate factor"),
            ("stiffness_cross_site", "FE x other-site factor"),
            ("stiffness_covariates_and_cross_site", "FE x both factors"),

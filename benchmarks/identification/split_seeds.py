@@ -31,6 +31,7 @@ FOLDER = os.path.join(ROOT, "output", "benchmarks", "split_seeds")
 RESULTS = os.path.join(HERE, "results")
 # summary.json's prediction keys, in the plot's order
 METHODS = [("population", "population FE"),
+           ("calibrated", "FE, one factor"),
            ("covariates", "FE x covariates"),
            ("cross_site", "FE x other sites"),
            ("covariates_and_cross_site", "FE x both"),

@@ -77,12 +77,13 @@ namespace ssc
     const LogFactors                     factors = log_factors(sites);
     std::vector<PersonalisedPredictions> methods;
     for (const SubjectInformation information :
-         {SubjectInformation::covariates,
+         {SubjectInformation::none,
+          SubjectInformation::covariates,
           SubjectInformation::other_sites,
           SubjectInformation::covariates_and_other_sites})
       {
         // the other sites' information needs another site
-        if (information != SubjectInformation::covariates && sites.size() < 2)
+        if (uses_other_sites(information) && sites.size() < 2)
           continue;
         PersonalisedPredictions method{information, {}, {}, {}, {}};
         for (unsigned int k = 0; k < sites.size(); ++k)

@@ -17,6 +17,8 @@ namespace ssc
   {
     switch (information)
       {
+        case SubjectInformation::none:
+          return "calibrated";
         case SubjectInformation::covariates:
           return "covariates";
         case SubjectInformation::other_sites:
@@ -36,12 +38,12 @@ namespace ssc
   SubjectFactorModel::feature_names() const
   {
     std::vector<std::string> names;
-    if (information != SubjectInformation::other_sites)
+    if (uses_covariates(information))
       names = {"age per 10 years",
                "male",
                "BMI per 5 kg/m^2",
                "activity level per step"};
-    if (information != SubjectInformation::covariates)
+    if (uses_other_sites(information))
       names.emplace_back("other sites' factor doubled");
     return names;
   }
@@ -52,7 +54,7 @@ namespace ssc
                                    const double other_site_factor) const
   {
     std::vector<double> z = {1.};
-    if (information != SubjectInformation::other_sites)
+    if (uses_covariates(information))
       {
         z.push_back(trial.age / 10.);
         z.push_back(trial.sex == "Male" ? 1. : 0.);
@@ -61,7 +63,7 @@ namespace ssc
       }
     // in octaves: exp(coefficient) is the factor here when the other
     // sites' factor doubles
-    if (information != SubjectInformation::covariates)
+    if (uses_other_sites(information))
       z.push_back(other_site_factor / std::log(2.));
     return z;
   }
@@ -95,6 +97,7 @@ namespace ssc
           ++known;
         }
     const double fill = known > 0 ? known_sum / known : 0.;
+    other_site_fill   = fill;
 
     Eigen::MatrixXd Z(n, p);
     Eigen::VectorXd y(n);
@@ -135,8 +138,11 @@ namespace ssc
         lower[j] = b(j) - t_quantile * std::sqrt(covariance(j, j));
         upper[j] = b(j) + t_quantile * std::sqrt(covariance(j, j));
       }
+    // log factors that do not vary (to round-off) leave nothing to explain
     const double total = (y.array() - y.mean()).square().sum();
-    explained_fraction = total > 0 ? 1. - residual.squaredNorm() / total : 0.;
+    explained_fraction = total > 1e-20 * y.squaredNorm() ?
+                           1. - residual.squaredNorm() / total :
+                           0.;
   }
 
 
@@ -146,10 +152,9 @@ namespace ssc
   {
     AssertThrow(!beta.empty(),
                 ExcMessage("SubjectFactorModel::log_factor before fit()."));
-    // no other site: the training mean (that of the subjects with one, as
-    // the fill makes the column's), i.e. no information
+    // no other site: the training subjects' mean, i.e. no information
     const double f =
-      std::isfinite(other_site_factor) ? other_site_factor : means.back();
+      std::isfinite(other_site_factor) ? other_site_factor : other_site_fill;
     const std::vector<double> z = raw_features(trial, f);
     double                    y = beta[0];
     for (unsigned int j = 1; j < z.size(); ++j)

@@ -24,7 +24,9 @@ namespace ssc
 
   /**
    * The per-person methods (SubjectFactorModel: covariates, the subject's
-   * other sites, both) on top of each site's population model in
+   * other sites, both), and their reference without per-person
+   * information (one factor for all: the population model recalibrated to
+   * the training stiffnesses), on top of each site's population model in
    * @p sites. The log factor of a trial is log(measured stiffness over
    * its site's population prediction); a subject's other-site factor at a
    * site is the mean of its log factors at the run's other sites. The split

@@ -11,6 +11,10 @@ namespace ssc
   /// What a per-person prediction knows about a subject.
   enum class SubjectInformation
   {
+    /// Nothing: one factor for every subject, the population model
+    /// recalibrated to the training stiffnesses (the reference that tells
+    /// what the per-person information adds).
+    none,
     /// Age, sex, body-mass index and activity level.
     covariates,
     /// The subject's own trials at the run's other sites.
@@ -19,8 +23,24 @@ namespace ssc
     covariates_and_other_sites
   };
 
-  /// The name of @p information in summary.json ("covariates",
-  /// "cross_site", "covariates_and_cross_site").
+  /// Whether @p information includes the subject's covariates.
+  inline bool
+  uses_covariates(const SubjectInformation information)
+  {
+    return information == SubjectInformation::covariates ||
+           information == SubjectInformation::covariates_and_other_sites;
+  }
+
+  /// Whether @p information includes the subject's other sites.
+  inline bool
+  uses_other_sites(const SubjectInformation information)
+  {
+    return information == SubjectInformation::other_sites ||
+           information == SubjectInformation::covariates_and_other_sites;
+  }
+
+  /// The name of @p information in summary.json ("calibrated",
+  /// "covariates", "cross_site", "covariates_and_cross_site").
   std::string
   subject_information_key(const SubjectInformation information);
 
@@ -106,7 +126,10 @@ namespace ssc
 
     SubjectInformation  information;
     std::vector<double> means, beta, lower, upper;
-    double              explained_fraction = 0;
+    /// The other sites' factor of a subject without another site: the
+    /// training subjects' mean.
+    double other_site_fill    = 0;
+    double explained_fraction = 0;
   };
 } // namespace ssc
 
