@@ -93,13 +93,18 @@ def person_figure(folder, sites):
         return
     rows = [r for r in read_rows(path) if r["set"] == "held_out"]
     methods = [(key, label) for key, label in METHODS if key in rows[0]]
-    fig, axes = plt.subplots(1, len(methods),
-                             figsize=(3.4 * len(methods), 3.6), squeeze=False)
+    columns = min(len(methods), 3)
+    rows_of_panels = (len(methods) + columns - 1) // columns
+    fig, axes = plt.subplots(rows_of_panels, columns,
+                             figsize=(3.6 * columns, 3.6 * rows_of_panels),
+                             squeeze=False)
+    for k in range(len(methods), rows_of_panels * columns):
+        axes.flat[k].axis("off")
     values = [float(r[key]) for r in rows
               for key in ["stiffness_measured_N_per_mm"] +
               [key for key, _ in methods]]
     lo, hi = 0.8 * min(values), 1.25 * max(values)
-    for ax, (key, label) in zip(axes[0], methods):
+    for ax, (key, label) in zip(axes.flat, methods):
         ax.plot([lo, hi], [lo, hi], "k-", lw=0.8)
         errors = []
         for site in sites:
