@@ -9,10 +9,10 @@
 //   a row with a field too few, a value that is not a number, a negative
 //   thickness, a header without a column ssc needs, a site list that
 //   matches no trial, a file that does not exist, a hexadecimal number,
-//   thicknesses, strains and ages outside a human range, an activity
-//   level the table does not use, a header with two
-//   columns of one name, an empty subject, a row given twice, a folder
-//   and a device as the file.
+//   thicknesses, strains and ages outside a human range, a sex other than
+//   Female or Male, an activity level the table does not use, a header
+//   with two columns of one name, an empty subject, a row given twice, a
+//   folder and a device as the file.
 
 #include <boost/algorithm/string/trim.hpp>
 
@@ -180,6 +180,11 @@ main(int argc, char **argv)
   });
   expect_error("activity level 'Very active'",
                [] { ssc::read_indentation_trials("activity.csv"); });
+  write_edited_copy("gender.csv", keep, [](std::string &row) {
+    replace_field(row, 4, "female");
+  });
+  expect_error("gender 'female'",
+               [] { ssc::read_indentation_trials("gender.csv"); });
   write_edited_copy("age.csv", keep, [](std::string &row) {
     replace_field(row, 3, "-20");
   });

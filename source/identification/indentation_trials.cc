@@ -192,6 +192,11 @@ namespace ssc
         trial.subject = field("SubID");
         trial.site    = field("Location");
         trial.sex     = field("Gender");
+        // the sex is a covariate of the per-person predictions (male = 1):
+        // a misspelt value must not count as the other sex
+        AssertThrow(trial.sex == "Female" || trial.sex == "Male",
+                    ExcMessage(where + ": column Gender is '" + trial.sex +
+                               "'; it is Female or Male."));
         trial.age =
           value_in("Age", 0, 130, "an age lies between 0 and 130 years");
         trial.bmi                                      = value_in("BMI",
