@@ -9,15 +9,21 @@ namespace ssc
     prm.add_parameter(
       "Method",
       method,
-      "cg: CG on the displacement system, preconditioned by AMG (every "
-      "formulation; its iterations grow with the bulk modulus). block: the "
-      "displacement-pressure saddle point of the mixed formulations (mixed, "
-      "mean dilatation, enhanced) by FGMRES with a block-triangular "
-      "preconditioner, AMG on the displacement block without the bulk "
-      "modulus and the cells' pressure blocks for the Schur complement: "
-      "the same displacement, with iterations that grow far less with nu "
-      "than CG's (layered punch, Q1: 83 / 154 / 436 against 70 / 208 / "
-      "1444 at nu = 0.3 / 0.49 / 0.4999; benchmarks/README.md). "
+      "cg: CG on the displacement system with the Preconditioner below "
+      "(every formulation; the pressure condensed, so its iterations grow "
+      "with the bulk modulus). block: the displacement-pressure saddle "
+      "point of the mixed formulations (mixed, mean dilatation, enhanced) "
+      "by FGMRES with a block-triangular preconditioner, the Preconditioner "
+      "below on the displacement block, which keeps a bulk modulus of at "
+      "most 8 mu whatever nu, and the cells' pressure blocks for the Schur "
+      "complement: the same displacement, with iterations that grow far "
+      "less with nu than CG's (layered punch, Q1 with amg: 83 / 171 / 309 "
+      "against 70 / 208 / 1444 at nu = 0.3 / 0.49 / 0.4999; with gmg and "
+      "Q2-P1, Degree = 2 and Formulation = mixed, 27 at nu 0.4999 on 77k "
+      "and 583k DoFs, about 40 with a layer 1000 times stiffer; Q1-P0 is "
+      "not inf-sup stable and its iterations double with each refinement "
+      "at nu 0.4999; "
+      "benchmarks/multigrid_layered). "
       "direct: sparse LU factorisation (MUMPS through Trilinos Amesos) of "
       "the displacement system: exact whatever nu and contrast, its memory "
       "and time grow faster than linearly with the DoFs (small and "
@@ -51,8 +57,10 @@ namespace ssc
       "vertical line blocks (robust to the thin layers' flat cells) and a "
       "direct solve on the coarse mesh: CG iterations nearly independent "
       "of the refinement, memory and time linear in the DoFs, on any "
-      "number of MPI ranks with the same iterations "
-      "(benchmarks/multigrid_layered). A tangent whose line blocks are not "
+      "number of MPI ranks with the same iterations; for nearly "
+      "incompressible layers (nu near 0.5) use it with Method = block and "
+      "Q2-P1 (benchmarks/multigrid_layered). A tangent whose line blocks "
+      "are not "
       "positive definite gets amg.");
     prm.add_parameter(
       "Factor indefinite tangents",

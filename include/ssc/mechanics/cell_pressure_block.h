@@ -19,14 +19,14 @@ namespace ssc
    * displacement solution as K and can be preconditioned robustly in nu
    * (PressureSystem, LinearSolver). The kernels give K_0, B, C, the
    * pressure mass matrix M and the shear modulus mu; augment() then moves
-   * a volumetric share gamma B^T M^{-1} B of modulus about 2 mu from the
+   * a volumetric share gamma B^T M^{-1} B of modulus about 8 mu from the
    * pressure into K_0 (K_0 alone is singular for the dilatation, which AMG
    * handles badly) and sets schur, the cell's approximation
    * M / (2 mu + gamma) + C of the Schur complement.
    */
   struct CellPressureBlock
   {
-    /// Moves gamma B^T M^{-1} B into K_0, gamma = min(2 mu, 1 / (2 tr(C
+    /// Moves gamma B^T M^{-1} B into K_0, gamma = min(8 mu, 1 / (2 tr(C
     /// M^{-1}))), so that C^{-1} - gamma M^{-1} stays positive definite
     /// (at least half C^{-1}); K_0 + B^T C^{-1} B is unchanged. Sets schur.
     void
