@@ -11,7 +11,7 @@ the ssc executable in two ways, both with Preconditioner = gmg:
 - block: the displacement-pressure saddle point of the mixed formulation
   (Q2-P1disc, and Q1-P0 for Q1) by FGMRES with the block-triangular
   preconditioner: the V-cycle on the displacement block, which carries a
-  bulk modulus of at most 2 mu whatever nu, and the cells' pressure blocks
+  bulk modulus of at most 8 mu whatever nu, and the cells' pressure blocks
   M / (2 mu + gamma) + C for the Schur complement;
 - cg: CG on the displacement system with the pressure condensed (the same
   discretisation and the same displacement), the V-cycle on the whole
@@ -27,7 +27,7 @@ methods must give alike.
 
     /usr/bin/python3 benchmarks/multigrid_layered/nearly_incompressible.py
 
-writes results/nearly_incompressible.csv and .png (about 25 minutes on one
+writes results/nearly_incompressible.csv and .png (about 35 minutes on one
 core; --methods block reruns the block rows only, --plot-only redraws the
 PNG from the CSV).
 """

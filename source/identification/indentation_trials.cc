@@ -186,35 +186,33 @@ namespace ssc
                                  field(name) + "; " + range + "."));
           return v;
         };
+        // the place of a categorical value in the values the table uses
+        // (a misspelt one must not count as another category)
+        const auto one_of = [&](const std::string              &name,
+                                const std::vector<std::string> &values) {
+          const auto found =
+            std::find(values.begin(), values.end(), field(name));
+          AssertThrow(found != values.end(),
+                      ExcMessage(where + ": column " + name + " is '" +
+                                 field(name) + "'; it is one of " +
+                                 boost::algorithm::join(values, ", ") + "."));
+          return static_cast<unsigned int>(found - values.begin());
+        };
 
         IndentationTrial trial;
         trial.line    = line_number;
         trial.subject = field("SubID");
         trial.site    = field("Location");
         trial.sex     = field("Gender");
-        // the sex is a covariate of the per-person predictions (male = 1):
-        // a misspelt value must not count as the other sex
-        AssertThrow(trial.sex == "Female" || trial.sex == "Male",
-                    ExcMessage(where + ": column Gender is '" + trial.sex +
-                               "'; it is Female or Male."));
+        one_of("Gender", {"Female", "Male"});
         trial.age =
           value_in("Age", 0, 130, "an age lies between 0 and 130 years");
-        trial.bmi                                      = value_in("BMI",
+        trial.bmi = value_in("BMI",
                              5,
                              100,
                              "a body-mass index lies between 5 and 100 kg/m^2");
-        const std::vector<std::string> activity_levels = {"Sedentary",
-                                                          "Moderately active",
-                                                          "Active"};
-        const auto level = std::find(activity_levels.begin(),
-                                     activity_levels.end(),
-                                     field("ActivityLevel"));
-        AssertThrow(level != activity_levels.end(),
-                    ExcMessage(where + ": column ActivityLevel is '" +
-                               field("ActivityLevel") +
-                               "'; it is one of Sedentary, Moderately active, "
-                               "Active."));
-        trial.activity_level = level - activity_levels.begin();
+        trial.activity_level =
+          one_of("ActivityLevel", {"Sedentary", "Moderately active", "Active"});
         AssertThrow(!trial.subject.empty(),
                     ExcMessage(where + ": column SubID is empty; every "
                                        "trial needs its subject."));
